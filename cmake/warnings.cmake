@@ -1,0 +1,15 @@
+# Compiler warnings for every partimix target; -Werror unless PARTIMIX_WERROR is OFF.
+# With PARTIMIX_SANITIZE, targets are built with ASan and UBSan (used by `make test-sanitize`).
+function(partimix_set_warnings target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wconversion
+                                           -Wno-sign-conversion)
+  if(PARTIMIX_WERROR)
+    target_compile_options(${target} PRIVATE -Werror)
+  endif()
+endfunction()
+
+if(PARTIMIX_SANITIZE)
+  add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer
+                      -fno-sanitize-recover=undefined)
+  add_link_options(-fsanitize=address,undefined)
+endif()

@@ -1,0 +1,41 @@
+#pragma once
+// Settings of the weakly-compressible SPH solver, as read from the `sph:` section of a case
+// file (docs/case-reference.md lists each key with unit and default; docs/sph.md the equations).
+#include <optional>
+#include <string>
+
+namespace partimix::sph {
+
+struct TimeStepFactors {
+  double cfl = 0.2;        // dt <= cfl * h / (c0 + |u|max)
+  double viscous = 0.125;  // dt <= viscous * h^2 / nu
+  double force = 0.25;     // dt <= force * sqrt(h / |a|max)
+};
+
+struct DensityTreatment {
+  std::string diffusion = "fourtakas";  // none | molteni | fourtakas (delta-SPH)
+  double delta = 0.1;                   // delta-SPH coefficient
+  int shepard_interval = 0;             // Shepard re-initialisation every N steps; 0: off
+};
+
+struct Config {
+  double spacing = 0.0;          // initial particle spacing dp [m]
+  double smoothing_ratio = 1.3;  // h / dp
+  std::string kernel = "wendland_c2";
+  std::string gradient_kernel;  // empty: the same as kernel
+  std::string equation_of_state = "tait";  // tait | linear
+  double tait_gamma = 7.0;
+  std::optional<double> sound_speed;   // c0 [m/s]; when absent, mach_factor * max_velocity
+  std::optional<double> max_velocity;  // [m/s]; when absent, sqrt(2 |g| H) of the fluid
+  double mach_factor = 10.0;
+  double artificial_viscosity = 0.0;  // Monaghan alpha; 0: off
+  bool laminar_viscosity = true;      // Morris laminar term with the fluid's viscosity
+  DensityTreatment density;
+  std::optional<int> wall_layers;  // when absent, enough layers to cover the kernel support
+  TimeStepFactors time_step;
+  int sort_interval = 20;  // re-sort particles by cell every N steps
+
+  double smoothing_length() const { return smoothing_ratio * spacing; }
+};
+
+}  // namespace partimix::sph

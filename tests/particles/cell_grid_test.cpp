@@ -1,0 +1,104 @@
+// Neighbour search equals brute force on random sets (2D, 3D, periodic).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <utility>
+#include <vector>
+
+#include "particles/cell_grid.hpp"
+
+namespace partimix {
+namespace {
+
+std::vector<Vec3> random_points(const Domain& domain, std::size_t count, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::vector<Vec3> points(count, Vec3::Zero());
+  for (auto& x : points) {
+    for (int axis = 0; axis < domain.dimensions; ++axis) {
+      std::uniform_real_distribution<double> u(domain.lo[axis], domain.hi[axis]);
+      x[axis] = u(rng);
+    }
+  }
+  return points;
+}
+
+using Pairs = std::vector<std::pair<std::size_t, std::size_t>>;
+
+Pairs brute_force(const Domain& domain, const std::vector<Vec3>& x, double radius) {
+  Pairs pairs;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    for (std::size_t j = 0; j < x.size(); ++j) {
+      if (domain.displacement(x[i], x[j]).norm() < radius) pairs.emplace_back(i, j);
+    }
+  }
+  return pairs;
+}
+
+Pairs from_grid(const Domain& domain, const std::vector<Vec3>& x, double radius) {
+  CellGrid grid(domain, radius);
+  grid.build(x);
+  Pairs pairs;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    grid.for_each_neighbour(i, x, [&](std::size_t j, const Vec3& rij, double r2) {
+      EXPECT_NEAR((rij - domain.displacement(x[i], x[j])).norm(), 0.0, 1e-12);
+      EXPECT_NEAR(r2, rij.squaredNorm(), 1e-15);
+      pairs.emplace_back(i, j);
+    });
+  }
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+void expect_same_as_brute_force(const Domain& domain, double radius, unsigned seed) {
+  const auto x = random_points(domain, 600, seed);
+  EXPECT_EQ(from_grid(domain, x, radius), brute_force(domain, x, radius));
+}
+
+TEST(CellGrid, MatchesBruteForce2D) {
+  Domain domain;
+  domain.dimensions = 2;
+  domain.lo = Vec3(-1.0, 0.0, 0.0);
+  domain.hi = Vec3(1.0, 1.5, 0.0);
+  expect_same_as_brute_force(domain, 0.13, 1);
+}
+
+TEST(CellGrid, MatchesBruteForce3D) {
+  Domain domain;
+  domain.hi = Vec3(1.0, 0.7, 0.5);
+  expect_same_as_brute_force(domain, 0.11, 2);
+}
+
+TEST(CellGrid, MatchesBruteForcePeriodic2D) {
+  Domain domain;
+  domain.dimensions = 2;
+  domain.hi = Vec3(1.0, 1.0, 0.0);
+  domain.periodic = {true, true, false};
+  expect_same_as_brute_force(domain, 0.15, 3);
+}
+
+TEST(CellGrid, MatchesBruteForcePeriodic3D) {
+  Domain domain;
+  domain.hi = Vec3(0.6, 0.8, 1.0);
+  domain.periodic = {true, false, true};
+  expect_same_as_brute_force(domain, 0.17, 4);
+}
+
+TEST(CellGrid, RejectsPeriodicAxisShorterThanThreeCells) {
+  Domain domain;
+  domain.periodic = {true, false, false};
+  EXPECT_THROW(CellGrid(domain, 0.4), std::invalid_argument);
+}
+
+TEST(CellGrid, CellOrderIsAPermutation) {
+  Domain domain;
+  const auto x = random_points(domain, 200, 5);
+  CellGrid grid(domain, 0.2);
+  grid.build(x);
+  std::vector<std::uint32_t> order(grid.cell_order().begin(), grid.cell_order().end());
+  std::sort(order.begin(), order.end());
+  for (std::uint32_t k = 0; k < order.size(); ++k) EXPECT_EQ(order[k], k);
+}
+
+}  // namespace
+}  // namespace partimix
