@@ -1,6 +1,41 @@
-#include <cstdio>
+// partimix: run, check and plot particle simulations of mixing (README.md).
+#include <CLI/CLI.hpp>
 
-int main() {
-  std::puts("partimix");
-  return 0;
+#include "app/commands.hpp"
+#include "core/error.hpp"
+
+int main(int argc, char** argv) {
+  using namespace partimix;
+  CLI::App cli{"partimix: particle methods for mixing and granular processes"};
+  cli.set_version_flag("--version", std::string("partimix ") + PARTIMIX_VERSION);
+  cli.require_subcommand(1);
+
+  app::RunArguments run;
+  CLI::App* run_cmd = cli.add_subcommand("run", "Run a case and write its outputs");
+  run_cmd->add_option("case", run.case_file, "Case file (YAML)")->required();
+  run_cmd->add_option("--out,-o", run.output_dir, "Output folder (default: out/<case name>)");
+  run_cmd->add_option("--set,-s", run.overrides, "Override a case key: key.path=value");
+  run_cmd->add_option("--threads,-t", run.threads, "OpenMP threads (default: all cores)")
+      ->check(CLI::PositiveNumber);
+  run_cmd->add_flag("--quiet,-q", run.quiet, "No progress line");
+
+  std::string check_file;
+  std::vector<std::string> check_overrides;
+  CLI::App* check_cmd = cli.add_subcommand("check", "Validate a case file and report its set-up");
+  check_cmd->add_option("case", check_file, "Case file (YAML)")->required();
+  check_cmd->add_option("--set,-s", check_overrides, "Override a case key: key.path=value");
+
+  std::string plot_dir;
+  CLI::App* plot_cmd = cli.add_subcommand("plot", "Plot series.csv of an output folder to PNG");
+  plot_cmd->add_option("outdir", plot_dir, "Output folder of a run")->required();
+
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    const int code = cli.exit(error);
+    return code == 0 ? kExitSuccess : kExitBadInput;
+  }
+  if (run_cmd->parsed()) return app::run_command(run);
+  if (check_cmd->parsed()) return app::check_command(check_file, check_overrides);
+  return app::plot_command(plot_dir);
 }

@@ -20,7 +20,7 @@ struct DensityTreatment {
 
 struct Config {
   double spacing = 0.0;          // initial particle spacing dp [m]
-  double smoothing_ratio = 1.3;  // h / dp
+  double smoothing_ratio = 1.5;  // h / dp (docs/sph.md, "Choice of h")
   std::string kernel = "wendland_c2";
   std::string gradient_kernel;  // empty: the same as kernel
   std::string equation_of_state = "tait";  // tait | linear

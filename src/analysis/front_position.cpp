@@ -1,0 +1,21 @@
+#include "analysis/front_position.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace partimix::analysis {
+
+std::vector<Column> FrontPosition::columns() const {
+  static const char* const axis_names[] = {"x", "y", "z"};
+  return {{std::string("front_") + axis_names[axis_], "m"}};
+}
+
+void FrontPosition::sample(const ParticleStore& particles, std::span<double> values) const {
+  double front = std::numeric_limits<double>::lowest();
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    if (particles.is_fluid(i)) front = std::max(front, particles.position()[i][axis_]);
+  }
+  values[0] = front;
+}
+
+}  // namespace partimix::analysis

@@ -1,0 +1,17 @@
+#pragma once
+// Surge front: the largest coordinate along one axis of any fluid particle (dam break).
+#include "analysis/analysis.hpp"
+
+namespace partimix::analysis {
+
+class FrontPosition final : public Analysis {
+ public:
+  explicit FrontPosition(int axis) : axis_(axis) {}
+  std::vector<Column> columns() const override;
+  void sample(const ParticleStore& particles, std::span<double> values) const override;
+
+ private:
+  int axis_;
+};
+
+}  // namespace partimix::analysis

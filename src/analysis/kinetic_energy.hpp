@@ -1,0 +1,13 @@
+#pragma once
+// Kinetic energy of the moving (fluid) particles: E = sum_i m_i |v_i|^2 / 2.
+#include "analysis/analysis.hpp"
+
+namespace partimix::analysis {
+
+class KineticEnergy final : public Analysis {
+ public:
+  std::vector<Column> columns() const override { return {{"kinetic_energy", "J"}}; }
+  void sample(const ParticleStore& particles, std::span<double> values) const override;
+};
+
+}  // namespace partimix::analysis

@@ -1,0 +1,13 @@
+#pragma once
+// Largest speed |v| of any fluid particle.
+#include "analysis/analysis.hpp"
+
+namespace partimix::analysis {
+
+class MaxSpeed final : public Analysis {
+ public:
+  std::vector<Column> columns() const override { return {{"max_speed", "m/s"}}; }
+  void sample(const ParticleStore& particles, std::span<double> values) const override;
+};
+
+}  // namespace partimix::analysis

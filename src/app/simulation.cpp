@@ -1,0 +1,82 @@
+#include "app/simulation.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "core/error.hpp"
+#include "geometry/lattice.hpp"
+#include "sph/kernel.hpp"
+#include "sph/wcsph_solver.hpp"
+
+namespace partimix::app {
+namespace {
+
+void append(ParticleStore& store, const std::vector<Vec3>& points, ParticleKind kind) {
+  const std::size_t first = store.size();
+  store.resize(first + points.size());
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    store.position()[first + k] = points[k];
+    store.kind()[first + k] = static_cast<std::int32_t>(kind);
+    store.id()[first + k] = static_cast<std::int64_t>(first + k);
+  }
+}
+
+InputError case_error(const io::Case& the_case, const std::string& key, const std::string& what) {
+  return InputError(InputLocation{the_case.file, 0, 0, key}, what);
+}
+
+void check_inside_domain(const io::Case& the_case, const ParticleStore& store) {
+  for (std::size_t i = 0; i < store.size(); ++i) {
+    if (!the_case.domain.contains(store.position()[i])) {
+      const Vec3& x = store.position()[i];
+      const std::string what = store.is_fluid(i) ? "fluid" : "wall";
+      throw case_error(the_case, "domain",
+                       "a " + what + " particle at (" + std::to_string(x.x()) + ", " +
+                           std::to_string(x.y()) + ", " + std::to_string(x.z()) +
+                           ") lies outside the domain; enlarge domain.min/max");
+    }
+  }
+}
+
+int wall_layers_for(const sph::Config& config) {
+  if (config.wall_layers) return *config.wall_layers;
+  const auto kernel = sph::kernel_registry().create(config.kernel);
+  const double support = kernel ? kernel->support() : 2.0;
+  return static_cast<int>(std::ceil(support * config.smoothing_ratio - 1e-9));
+}
+
+}  // namespace
+
+void generate_particles(const io::Case& the_case, int wall_layers, ParticleStore& store) {
+  const double spacing = the_case.sph.spacing;
+  for (const auto& region : the_case.fluid.regions) {
+    append(store, geometry::fill(*region.shape, spacing, the_case.domain), ParticleKind::fluid);
+  }
+  for (const auto& wall : the_case.walls) {
+    append(store,
+           geometry::wall_layers(*wall.shape, spacing, wall_layers, wall.open_faces,
+                                 the_case.domain),
+           ParticleKind::wall);
+  }
+}
+
+Simulation build_simulation(const io::Case& the_case) {
+  Simulation simulation;
+  simulation.store = std::make_unique<ParticleStore>();
+  generate_particles(the_case, wall_layers_for(the_case.sph), *simulation.store);
+  if (simulation.store->size() == 0) {
+    throw case_error(the_case, "fluid.regions", "the case generates no particles");
+  }
+  check_inside_domain(the_case, *simulation.store);
+  try {
+    simulation.solver = std::make_unique<sph::WcsphSolver>(
+        *simulation.store, the_case.domain, the_case.sph,
+        sph::FluidProperties{the_case.fluid.density, the_case.fluid.viscosity},
+        the_case.gravity);
+  } catch (const std::invalid_argument& error) {
+    throw case_error(the_case, "sph", error.what());
+  }
+  return simulation;
+}
+
+}  // namespace partimix::app

@@ -1,0 +1,24 @@
+#pragma once
+// A simulation built from a case (DESIGN.md, "One run"): the particle store filled from the
+// case geometry, and the solver chosen by the case's `solver` key.
+#include <memory>
+
+#include "io/case.hpp"
+#include "particles/particle_store.hpp"
+#include "particles/solver.hpp"
+
+namespace partimix::app {
+
+struct Simulation {
+  std::unique_ptr<ParticleStore> store;
+  std::unique_ptr<Solver> solver;
+};
+
+// Throws InputError (naming the case key) when the case cannot be built, e.g. particles that
+// fall outside the domain or a periodic axis too short for the kernel.
+Simulation build_simulation(const io::Case& the_case);
+
+// Fills `store` with the fluid regions and wall layers of the case (ids in creation order).
+void generate_particles(const io::Case& the_case, int wall_layers, ParticleStore& store);
+
+}  // namespace partimix::app

@@ -1,0 +1,51 @@
+#include "io/atomic_file.hpp"
+
+#include <fstream>
+#include <system_error>
+
+#include "core/error.hpp"
+
+namespace partimix::io {
+namespace {
+
+std::filesystem::path temporary_path(const std::filesystem::path& file) {
+  std::filesystem::path tmp = file;
+  tmp += ".tmp";
+  return tmp;
+}
+
+void write_temporary(const std::filesystem::path& tmp, const std::filesystem::path& file,
+                     const std::function<void(std::ostream&)>& write_content) {
+  std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+  if (!out) {
+    throw RunError("cannot open '" + tmp.string() + "' for writing '" + file.string() + "'");
+  }
+  write_content(out);
+  out.close();
+  if (!out) {
+    throw RunError("failed writing '" + file.string() + "'");
+  }
+}
+
+}  // namespace
+
+void write_atomically(const std::filesystem::path& file,
+                      const std::function<void(std::ostream&)>& write_content) {
+  const std::filesystem::path tmp = temporary_path(file);
+  std::error_code ignored;
+  try {
+    write_temporary(tmp, file, write_content);
+  } catch (...) {
+    std::filesystem::remove(tmp, ignored);
+    throw;
+  }
+  std::error_code error;
+  std::filesystem::rename(tmp, file, error);
+  if (error) {
+    std::filesystem::remove(tmp, ignored);
+    throw RunError("cannot rename '" + tmp.string() + "' to '" + file.string() +
+                   "': " + error.message());
+  }
+}
+
+}  // namespace partimix::io

@@ -1,0 +1,37 @@
+#pragma once
+// The per-particle arrays of the SPH solver, held in the particle store (so that sorting and
+// writers see them) and referenced here for the interaction loops.
+#include <vector>
+
+#include "particles/particle_store.hpp"
+
+namespace partimix::sph {
+
+struct Fields {
+  explicit Fields(ParticleStore& store)
+      : kind(store.kind()),
+        position(store.position()),
+        velocity(store.velocity()),
+        mass(store.mass()),
+        density(store.add_scalar("density", "kg/m^3").values),
+        pressure(store.add_scalar("pressure", "Pa").values),
+        density_rate(store.add_scalar("density_rate", "kg/(m^3 s)", false).values),
+        acceleration(store.add_vector("acceleration", "m/s^2", false).values),
+        wall_velocity(store.add_vector("wall_velocity", "m/s", false).values) {}
+
+  std::vector<std::int32_t>& kind;
+  std::vector<Vec3>& position;
+  std::vector<Vec3>& velocity;
+  std::vector<double>& mass;
+  std::vector<double>& density;
+  std::vector<double>& pressure;
+  std::vector<double>& density_rate;
+  std::vector<Vec3>& acceleration;
+  std::vector<Vec3>& wall_velocity;  // wall particles: the no-slip ghost velocity (Adami 2012)
+};
+
+inline bool is_fluid(std::int32_t kind) {
+  return kind == static_cast<std::int32_t>(ParticleKind::fluid);
+}
+
+}  // namespace partimix::sph

@@ -1,0 +1,22 @@
+#pragma once
+// Density rate and acceleration of every fluid particle (docs/sph.md, "Discrete equations"):
+// continuity in the seed's form (eq. 13) plus delta-SPH diffusion (Molteni and Colagrossi 2009;
+// Fourtakas et al. 2019), pressure gradient (seed eq. 14 with sigma = -p I), Morris laminar
+// viscosity (seed eq. 17) and Monaghan artificial viscosity (seed eqs. 18-19).
+#include "particles/cell_grid.hpp"
+#include "sph/fields.hpp"
+#include "sph/kernel_table.hpp"
+#include "sph/parameters.hpp"
+
+namespace partimix::sph {
+
+struct RateExtremes {
+  double max_acceleration = 0.0;  // over fluid particles [m/s^2]
+  double max_speed = 0.0;         // over fluid particles [m/s]
+};
+
+// Needs pressures of all particles and the wall state of this instant.
+RateExtremes compute_fluid_rates(Fields& fields, const CellGrid& grid,
+                                 const KernelTable& gradient_kernel, const Parameters& parameters);
+
+}  // namespace partimix::sph

@@ -1,0 +1,202 @@
+#include "sph/wcsph_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "sph/fluid_rates.hpp"
+#include "sph/shepard_filter.hpp"
+#include "sph/sound_speed.hpp"
+#include "sph/wall_state.hpp"
+
+namespace partimix::sph {
+namespace {
+
+std::unique_ptr<Kernel> make_kernel(const std::string& name, const std::string& key) {
+  auto kernel = kernel_registry().create(name);
+  if (!kernel) throw std::invalid_argument(key + ": unknown kernel '" + name + "'");
+  return kernel;
+}
+
+DensityDiffusion diffusion_from(const std::string& name) {
+  if (name == "none") return DensityDiffusion::none;
+  if (name == "molteni") return DensityDiffusion::molteni;
+  if (name == "fourtakas") return DensityDiffusion::fourtakas;
+  throw std::invalid_argument("sph.density.diffusion: unknown model '" + name + "'");
+}
+
+Vec3 without_periodic_axes(const Vec3& gravity, const Domain& domain) {
+  Vec3 g = gravity;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (domain.periodic[axis]) g[axis] = 0.0;
+  }
+  return g;
+}
+
+Parameters make_parameters(const Config& config, const FluidProperties& fluid,
+                           const Vec3& gravity, const Domain& domain, const ParticleStore& store) {
+  Parameters p;
+  p.dimensions = domain.dimensions;
+  p.spacing = config.spacing;
+  p.h = config.smoothing_length();
+  p.eta2 = 0.01 * p.h * p.h;
+  p.reference_density = fluid.density;
+  p.viscosity = fluid.viscosity;
+  p.gravity = gravity;
+  p.hydrostatic_gravity = without_periodic_axes(gravity, domain);
+  p.sound_speed = resolve_sound_speed(config, store, p.hydrostatic_gravity);
+  p.laminar_viscosity = config.laminar_viscosity;
+  p.artificial_viscosity = config.artificial_viscosity;
+  p.diffusion = diffusion_from(config.density.diffusion);
+  p.delta = config.density.delta;
+  return p;
+}
+
+}  // namespace
+
+WcsphSolver::WcsphSolver(ParticleStore& store, const Domain& domain, const Config& config,
+                         const FluidProperties& fluid, const Vec3& gravity)
+    : store_(store),
+      domain_(domain),
+      config_(config),
+      parameters_(make_parameters(config, fluid, gravity, domain, store)),
+      fields_(store),
+      kernel_(make_kernel(config.kernel, "sph.kernel")),
+      gradient_kernel_(make_kernel(
+          config.gradient_kernel.empty() ? config.kernel : config.gradient_kernel,
+          "sph.gradient_kernel")),
+      eos_(equation_of_state_registry().create(
+          config.equation_of_state,
+          EosParameters{fluid.density, parameters_.sound_speed, config.tait_gamma})),
+      kernel_table_(*kernel_, parameters_.h, domain.dimensions),
+      gradient_table_(*gradient_kernel_, parameters_.h, domain.dimensions),
+      grid_(domain, std::max(kernel_table_.support_radius(), gradient_table_.support_radius())) {
+  if (!eos_) {
+    throw std::invalid_argument("sph.equation_of_state: unknown '" + config.equation_of_state +
+                                "'");
+  }
+  initialise_fluid();
+  sort_by_cell();
+  interact();
+}
+
+void WcsphSolver::initialise_fluid() {
+  const double volume = std::pow(parameters_.spacing, domain_.dimensions);
+  const Vec3& g = parameters_.hydrostatic_gravity;
+  const double g_norm = g.norm();
+  double top = std::numeric_limits<double>::lowest();
+  for (std::size_t i = 0; i < store_.size(); ++i) {
+    if (store_.is_fluid(i) && g_norm > 0.0) {
+      top = std::max(top, -g.dot(fields_.position[i]) / g_norm);
+    }
+  }
+  top += 0.5 * parameters_.spacing;
+  for (std::size_t i = 0; i < store_.size(); ++i) {
+    fields_.mass[i] = parameters_.reference_density * volume;
+    fields_.density[i] = parameters_.reference_density;
+    if (store_.is_fluid(i) && g_norm > 0.0) {
+      const double depth = top + g.dot(fields_.position[i]) / g_norm;
+      fields_.density[i] = eos_->density(parameters_.reference_density * g_norm * depth);
+    }
+  }
+  wrap_positions();
+}
+
+void WcsphSolver::wrap_positions() {
+  for (auto& x : fields_.position) domain_.wrap(x);
+}
+
+void WcsphSolver::sort_by_cell() {
+  grid_.build(fields_.position);
+  store_.reorder(grid_.cell_order());
+}
+
+void WcsphSolver::interact() {
+  grid_.build(fields_.position);
+  for (std::size_t i = 0; i < store_.size(); ++i) {
+    if (store_.is_fluid(i)) fields_.pressure[i] = eos_->pressure(fields_.density[i]);
+  }
+  update_wall_state(fields_, grid_, kernel_table_, *eos_, parameters_);
+  const RateExtremes extremes = compute_fluid_rates(fields_, grid_, gradient_table_, parameters_);
+  max_acceleration_ = extremes.max_acceleration;
+  max_speed_ = extremes.max_speed;
+}
+
+double WcsphSolver::stable_dt() const {
+  const TimeStepFactors& factors = config_.time_step;
+  const double h = parameters_.h;
+  double dt = factors.cfl * h / (parameters_.sound_speed + max_speed_);
+  const double nu = parameters_.viscosity / parameters_.reference_density;
+  if (parameters_.laminar_viscosity && nu > 0.0) {
+    dt = std::min(dt, factors.viscous * h * h / nu);
+  }
+  if (max_acceleration_ > 0.0) {
+    dt = std::min(dt, factors.force * std::sqrt(h / max_acceleration_));
+  }
+  return dt;
+}
+
+// Symplectic position-Verlet (docs/sph.md, "Time integration"), half step.
+void WcsphSolver::predict(double dt) {
+  const std::size_t n = store_.size();
+  start_position_.resize(n);
+  start_velocity_.resize(n);
+  start_density_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!store_.is_fluid(i)) continue;
+    start_position_[i] = fields_.position[i];
+    start_velocity_[i] = fields_.velocity[i];
+    start_density_[i] = fields_.density[i];
+    fields_.density[i] += 0.5 * dt * fields_.density_rate[i];
+    fields_.velocity[i] += 0.5 * dt * fields_.acceleration[i];
+    fields_.position[i] += 0.5 * dt * start_velocity_[i];
+  }
+  wrap_positions();
+}
+
+// Corrector: full step from the start state with the rates at the half step; the density
+// update rho^{n+1} = rho^n (2 - eps) / (2 + eps), eps = -(drho/dt / rho)^{n+1/2} dt.
+void WcsphSolver::correct(double dt) {
+  for (std::size_t i = 0; i < store_.size(); ++i) {
+    if (!store_.is_fluid(i)) continue;
+    const double epsilon = -fields_.density_rate[i] / fields_.density[i] * dt;
+    fields_.velocity[i] = start_velocity_[i] + dt * fields_.acceleration[i];
+    fields_.position[i] += 0.5 * dt * fields_.velocity[i];
+    fields_.density[i] = start_density_[i] * (2.0 - epsilon) / (2.0 + epsilon);
+  }
+  wrap_positions();
+}
+
+void WcsphSolver::step(double dt) {
+  predict(dt);
+  interact();
+  correct(dt);
+  ++steps_;
+  if (config_.density.shepard_interval > 0 &&
+      steps_ % static_cast<std::size_t>(config_.density.shepard_interval) == 0) {
+    grid_.build(fields_.position);
+    apply_shepard_filter(fields_, grid_, kernel_table_, scratch_);
+  }
+  if (steps_ % static_cast<std::size_t>(config_.sort_interval) == 0) {
+    sort_by_cell();
+  }
+  interact();
+}
+
+}  // namespace partimix::sph
+
+namespace partimix::sph {
+
+std::map<std::string, double> WcsphSolver::derived_parameters() const {
+  std::size_t fluid = 0;
+  for (std::size_t i = 0; i < store_.size(); ++i) fluid += store_.is_fluid(i) ? 1 : 0;
+  return {{"smoothing_length [m]", parameters_.h},
+          {"sound_speed [m/s]", parameters_.sound_speed},
+          {"particle_mass [kg]", fields_.mass.empty() ? 0.0 : fields_.mass.front()},
+          {"fluid_particles [-]", static_cast<double>(fluid)},
+          {"wall_particles [-]", static_cast<double>(store_.size() - fluid)},
+          {"initial_time_step [s]", stable_dt()}};
+}
+
+}  // namespace partimix::sph

@@ -1,0 +1,70 @@
+#pragma once
+// Weakly-compressible SPH for Newtonian free-surface flow (docs/sph.md): the seed's eqs. 1-3,
+// 8-13 and 17-20 with Adami walls, delta-SPH, and the symplectic predictor-corrector of
+// Monaghan (2005) / DualSPHysics with adaptive time step.
+#include <memory>
+#include <string_view>
+#include <vector>
+
+#include "particles/cell_grid.hpp"
+#include "particles/solver.hpp"
+#include "sph/config.hpp"
+#include "sph/equation_of_state.hpp"
+#include "sph/fields.hpp"
+#include "sph/kernel.hpp"
+#include "sph/kernel_table.hpp"
+#include "sph/parameters.hpp"
+
+namespace partimix::sph {
+
+struct FluidProperties {
+  double density = 1000.0;  // rho0 [kg/m^3]
+  double viscosity = 0.0;   // mu [Pa s]
+};
+
+class WcsphSolver final : public Solver {
+ public:
+  // `store` holds fluid and wall particles with kind and position set. The solver sets masses
+  // (rho0 dp^d), hydrostatic initial densities and its own fields. Throws std::invalid_argument
+  // naming the case key when the configuration cannot be used (e.g. no way to set c0).
+  WcsphSolver(ParticleStore& store, const Domain& domain, const Config& config,
+              const FluidProperties& fluid, const Vec3& gravity);
+
+  std::string_view name() const override { return "sph"; }
+  const ParticleStore& particles() const override { return store_; }
+  const Domain& domain() const override { return domain_; }
+  double stable_dt() const override;
+  void step(double dt) override;
+  std::map<std::string, double> derived_parameters() const override;
+
+  const Parameters& parameters() const { return parameters_; }
+
+ private:
+  void initialise_fluid();
+  void interact();
+  void predict(double dt);
+  void correct(double dt);
+  void wrap_positions();
+  void sort_by_cell();
+
+  ParticleStore& store_;
+  Domain domain_;
+  Config config_;
+  Parameters parameters_;
+  Fields fields_;
+  std::unique_ptr<Kernel> kernel_;
+  std::unique_ptr<Kernel> gradient_kernel_;
+  std::unique_ptr<EquationOfState> eos_;
+  KernelTable kernel_table_;
+  KernelTable gradient_table_;
+  CellGrid grid_;
+  double max_acceleration_ = 0.0;
+  double max_speed_ = 0.0;
+  std::size_t steps_ = 0;
+  std::vector<Vec3> start_position_;
+  std::vector<Vec3> start_velocity_;
+  std::vector<double> start_density_;
+  std::vector<double> scratch_;
+};
+
+}  // namespace partimix::sph

@@ -1,0 +1,59 @@
+#pragma once
+// Cases built in code for the validation tests (no case file needed).
+#include <memory>
+
+#include "geometry/shape.hpp"
+#include "io/case.hpp"
+
+namespace partimix::testing_cases {
+
+// A 2D tank [0, width] x [0, 2 depth] with walls on the floor and sides, filled with water to
+// `depth`, gravity -9.81 in y.
+inline io::Case tank_2d(double width, double depth, double spacing) {
+  io::Case c;
+  c.name = "tank_2d";
+  c.solver = "sph";
+  c.domain.dimensions = 2;
+  const double margin = 4.0 * spacing;
+  c.domain.lo = Vec3(-margin, -margin, 0.0);
+  c.domain.hi = Vec3(width + margin, 2.0 * depth, 0.0);
+  c.gravity = Vec3(0.0, -9.81, 0.0);
+  c.sph.spacing = spacing;
+  c.fluid.density = 1000.0;
+  c.fluid.viscosity = 1.0e-3;
+  c.fluid.regions.push_back(
+      {std::make_shared<geometry::Box>(Vec3(0.0, 0.0, -1.0), Vec3(width, depth, 1.0))});
+  c.walls.push_back({std::make_shared<geometry::Box>(Vec3(0.0, 0.0, -1.0),
+                                                     Vec3(width, 2.0 * depth, 1.0)),
+                     {geometry::Face{1, 1}}});
+  return c;
+}
+
+}  // namespace partimix::testing_cases
+
+namespace partimix::testing_cases {
+
+// Poiseuille flow between plates y = 0 and y = width, periodic in x, driven by the body force
+// `force` along x (Morris, Fox and Zhu 1997, section 4.1). `length` is the periodic length.
+inline io::Case poiseuille_2d(double width, double length, double spacing, double force,
+                              double density, double viscosity, double max_velocity) {
+  io::Case c;
+  c.name = "poiseuille_2d";
+  c.solver = "sph";
+  c.domain.dimensions = 2;
+  c.domain.lo = Vec3(0.0, -4.0 * spacing, 0.0);
+  c.domain.hi = Vec3(length, width + 4.0 * spacing, 0.0);
+  c.domain.periodic = {true, false, false};
+  c.gravity = Vec3(force, 0.0, 0.0);
+  c.sph.spacing = spacing;
+  c.sph.max_velocity = max_velocity;
+  c.fluid.density = density;
+  c.fluid.viscosity = viscosity;
+  const auto channel =
+      std::make_shared<geometry::Box>(Vec3(0.0, 0.0, -1.0), Vec3(length, width, 1.0));
+  c.fluid.regions.push_back({channel});
+  c.walls.push_back({channel, {}});
+  return c;
+}
+
+}  // namespace partimix::testing_cases

@@ -1,0 +1,156 @@
+#!/usr/bin/env python3
+"""Plot a run's time series: python3 tools/plot_series.py OUTDIR
+
+Reads OUTDIR/series.csv (header "name [unit]", one row per sample time) and writes one PNG
+per column against time, OUTDIR/plots/<name>.png, plus OUTDIR/plots/overview.png with every
+column as a subplot. Exit codes: 0 success, 1 plotting failed, 2 bad input (no series.csv,
+an empty one, no rows, or only a time column).
+
+Needs matplotlib and numpy (Debian: python3-matplotlib, python3-numpy for /usr/bin/python3).
+"""
+
+import argparse
+import csv
+import math
+import re
+import sys
+from pathlib import Path
+
+EXIT_FAILED = 1
+EXIT_BAD_INPUT = 2
+HEADER_CELL = re.compile(r"^\s*(.*?)\s*\[(.*)\]\s*$")
+
+
+class BadInput(Exception):
+    """The series cannot be plotted because of what is (not) in OUTDIR."""
+
+
+def parse_header_cell(cell):
+    """'kinetic_energy [J]' -> ('kinetic_energy', 'J'); a cell without brackets has unit '-'."""
+    match = HEADER_CELL.match(cell)
+    if match:
+        return match.group(1), match.group(2) or "-"
+    return cell.strip(), "-"
+
+
+def parse_row(cells, width, line_number, path):
+    """The row as floats, or None (with a warning) if it is not a complete numeric row."""
+    try:
+        if len(cells) == width:
+            return [float(cell) for cell in cells]
+    except ValueError:
+        pass
+    print(f"warning: {path}:{line_number}: skipped malformed row", file=sys.stderr)
+    return None
+
+
+def read_series(path):
+    """Columns [(name, unit)] and the values as a list of columns (lists of floats)."""
+    if not path.is_file():
+        raise BadInput(f"{path} does not exist (is this a partimix output folder?)")
+    with path.open(newline="") as handle:
+        lines = list(csv.reader(handle))
+    if not lines or not any(cell.strip() for cell in lines[0]):
+        raise BadInput(f"{path} is empty")
+    columns = [parse_header_cell(cell) for cell in lines[0]]
+    if len(columns) < 2:
+        raise BadInput(f"{path} has no column to plot against time")
+    rows = [parse_row(cells, len(columns), number, path)
+            for number, cells in enumerate(lines[1:], start=2) if cells]
+    rows = [row for row in rows if row is not None]
+    if not rows:
+        raise BadInput(f"{path} has a header but no rows")
+    return columns, [list(values) for values in zip(*rows)]
+
+
+def time_index(columns):
+    """The column named 'time', else the first column."""
+    names = [name for name, _ in columns]
+    return names.index("time") if "time" in names else 0
+
+
+def file_stem(name):
+    """A column name made safe as a file name."""
+    return re.sub(r"[^A-Za-z0-9_.-]", "_", name) or "column"
+
+
+def draw(axes, time, values, time_label, column):
+    name, unit = column
+    axes.plot(time, values, marker="." if len(time) < 50 else None)
+    axes.set_xlabel(time_label)
+    axes.set_ylabel(f"{name} [{unit}]")
+    axes.grid(True, alpha=0.3)
+
+
+def load_pyplot():
+    """matplotlib.pyplot on the Agg backend (no display needed)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def plot_all(columns, data, plots):
+    """Writes one PNG per non-time column and the overview; returns the files written."""
+    import numpy as np
+
+    plt = load_pyplot()
+    t_index = time_index(columns)
+    time = np.asarray(data[t_index])
+    time_label = "{} [{}]".format(*columns[t_index])
+    series = [(columns[k], np.asarray(data[k])) for k in range(len(columns)) if k != t_index]
+    plots.mkdir(parents=True, exist_ok=True)
+    written = []
+    for column, values in series:
+        figure, axes = plt.subplots(figsize=(6.4, 4.0))
+        draw(axes, time, values, time_label, column)
+        written.append(plots / f"{file_stem(column[0])}.png")
+        save(plt, figure, written[-1], dpi=120)
+    written.append(plots / "overview.png")
+    save(plt, overview(plt, series, time, time_label), written[-1], dpi=100)
+    return written
+
+
+def overview(plt, series, time, time_label):
+    """One figure with every series as a subplot, in two columns when there are many."""
+    ncols = 1 if len(series) <= 3 else 2
+    nrows = math.ceil(len(series) / ncols)
+    figure, grid = plt.subplots(nrows, ncols, figsize=(6.4 * ncols, 2.8 * nrows),
+                                squeeze=False, sharex=True)
+    cells = grid.ravel()
+    for axes, (column, values) in zip(cells, series):
+        draw(axes, time, values, time_label, column)
+    for axes in cells[len(series):]:
+        axes.set_visible(False)
+    return figure
+
+
+def save(plt, figure, path, dpi):
+    figure.tight_layout()
+    figure.savefig(path, dpi=dpi)
+    plt.close(figure)
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(description="Plot OUTDIR/series.csv into OUTDIR/plots.")
+    parser.add_argument("outdir", type=Path, help="a partimix output folder")
+    args = parser.parse_args(argv)
+    try:
+        columns, data = read_series(args.outdir / "series.csv")
+    except BadInput as error:
+        print(f"plot_series: {error}", file=sys.stderr)
+        return EXIT_BAD_INPUT
+    try:
+        written = plot_all(columns, data, args.outdir / "plots")
+    except ImportError as error:
+        print(f"plot_series: {error}; install matplotlib and numpy for {sys.executable} "
+              "(Debian: python3-matplotlib python3-numpy)", file=sys.stderr)
+        return EXIT_FAILED
+    print(f"plot_series: wrote {len(written)} plots to {args.outdir / 'plots'}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
