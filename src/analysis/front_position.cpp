@@ -13,7 +13,8 @@ std::vector<Column> FrontPosition::columns() const {
 void FrontPosition::sample(const ParticleStore& particles, std::span<double> values) const {
   double front = std::numeric_limits<double>::lowest();
   for (std::size_t i = 0; i < particles.size(); ++i) {
-    if (particles.is_fluid(i)) front = std::max(front, particles.position()[i][axis_]);
+    if (particles.is_fluid(i))
+      front = std::max(front, particles.position()[i][axis_]);
   }
   values[0] = front;
 }

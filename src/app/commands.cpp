@@ -26,8 +26,10 @@ void print_parameters(const Solver& solver) {
 }
 
 int exit_code_of(const std::string& status) {
-  if (status == "completed") return kExitSuccess;
-  if (status == "interrupted") return kExitInterrupted;
+  if (status == "completed")
+    return kExitSuccess;
+  if (status == "interrupted")
+    return kExitInterrupted;
   return kExitRunFailed;
 }
 
@@ -37,11 +39,11 @@ int run_command(const RunArguments& arguments) {
   try {
     const io::Case the_case = io::load_case(arguments.case_file, arguments.overrides);
     Simulation simulation = build_simulation(the_case);
-    if (arguments.threads > 0) omp_set_num_threads(arguments.threads);
+    if (arguments.threads > 0)
+      omp_set_num_threads(arguments.threads);
     RunOptions options;
-    options.output_dir = arguments.output_dir.empty()
-                             ? std::filesystem::path("out") / the_case.name
-                             : arguments.output_dir;
+    options.output_dir = arguments.output_dir.empty() ? std::filesystem::path("out") / the_case.name
+                                                      : arguments.output_dir;
     options.threads = omp_get_max_threads();
     options.show_progress = !arguments.quiet;
     fmt::print(stderr, "partimix {}: {} ({} particles, {} threads) -> {}\n", PARTIMIX_VERSION,
@@ -58,7 +60,8 @@ int run_command(const RunArguments& arguments) {
     fmt::print(stderr, "{}: {} steps to t = {:.6g} s in {:.1f} s ({:.3g} particle-steps/s)\n",
                summary.status, summary.steps, summary.simulated_time, summary.wall_seconds,
                throughput);
-    if (!summary.message.empty()) fmt::print(stderr, "{}\n", summary.message);
+    if (!summary.message.empty())
+      fmt::print(stderr, "{}\n", summary.message);
     return exit_code_of(summary.status);
   } catch (const InputError& error) {
     fmt::print(stderr, "error: {}\n", error.what());
@@ -89,7 +92,8 @@ int plot_command(const std::filesystem::path& output_dir) {
   const std::string command =
       fmt::format("/usr/bin/python3 '{}' '{}'", script.string(), output_dir.string());
   const int status = std::system(command.c_str());
-  if (status == -1) return kExitRunFailed;
+  if (status == -1)
+    return kExitRunFailed;
   return WEXITSTATUS(status);
 }
 

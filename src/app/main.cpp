@@ -35,7 +35,9 @@ int main(int argc, char** argv) {
     const int code = cli.exit(error);
     return code == 0 ? kExitSuccess : kExitBadInput;
   }
-  if (run_cmd->parsed()) return app::run_command(run);
-  if (check_cmd->parsed()) return app::check_command(check_file, check_overrides);
+  if (run_cmd->parsed())
+    return app::run_command(run);
+  if (check_cmd->parsed())
+    return app::check_command(check_file, check_overrides);
   return app::plot_command(plot_dir);
 }

@@ -36,7 +36,8 @@ std::vector<io::SeriesColumn> series_columns(
     const std::vector<std::unique_ptr<analysis::Analysis>>& analyses) {
   std::vector<io::SeriesColumn> columns{{"time", "s"}, {"step", ""}, {"dt", "s"}};
   for (const auto& a : analyses) {
-    for (const auto& column : a->columns()) columns.push_back(column);
+    for (const auto& column : a->columns())
+      columns.push_back(column);
   }
   return columns;
 }
@@ -81,7 +82,8 @@ void Runner::write_frame(double time) {
 
 void Runner::write_metadata(const io::RunSummary& summary) const {
   nlohmann::json parameters;
-  for (const auto& [name, value] : solver_.derived_parameters()) parameters[name] = value;
+  for (const auto& [name, value] : solver_.derived_parameters())
+    parameters[name] = value;
   const nlohmann::json content{{"partimix_version", PARTIMIX_VERSION},
                                {"case_file", case_.file},
                                {"case", case_.resolved},
@@ -100,13 +102,15 @@ io::RunSummary Runner::run() {
   io::RunSummary summary{"running", "", particles, 0, 0.0, 0.0, options_.threads};
   write_metadata(summary);
   std::optional<Progress> progress;
-  if (options_.show_progress) progress.emplace(time.end, stderr, isatty(fileno(stderr)) != 0);
+  if (options_.show_progress)
+    progress.emplace(time.end, stderr, isatty(fileno(stderr)) != 0);
   Stopwatch wall;
   const double tolerance = 1e-9 * time.end;
   double t = 0.0;
   std::size_t steps = 0;
   sample(t, steps, 0.0);
-  if (case_.output.frames) write_frame(t);
+  if (case_.output.frames)
+    write_frame(t);
   double next_sample = time.sample_interval;
   double next_frame = time.output_interval;
   summary.status = "completed";
@@ -119,8 +123,8 @@ io::RunSummary Runner::run() {
     const double dt = std::min(solver_.stable_dt(), time.end - t);
     if (!(dt > tolerance)) {
       summary.status = "failed";
-      summary.message = fmt::format("step {}, t = {:.6g} s: the time step fell to {:.3g} s", steps,
-                                    t, dt);
+      summary.message =
+          fmt::format("step {}, t = {:.6g} s: the time step fell to {:.3g} s", steps, t, dt);
       break;
     }
     solver_.step(dt);
@@ -133,18 +137,22 @@ io::RunSummary Runner::run() {
     }
     if (t >= next_sample - tolerance) {
       sample(t, steps, dt);
-      while (next_sample <= t + tolerance) next_sample += time.sample_interval;
+      while (next_sample <= t + tolerance)
+        next_sample += time.sample_interval;
     }
     if (case_.output.frames && t >= next_frame - tolerance) {
       write_frame(t);
-      while (next_frame <= t + tolerance) next_frame += time.output_interval;
+      while (next_frame <= t + tolerance)
+        next_frame += time.output_interval;
     }
-    if (progress) progress->update(t, steps, particles);
+    if (progress)
+      progress->update(t, steps, particles);
   }
   if (summary.status != "failed" && case_.output.frames && last_frame_time_ != t) {
     write_frame(t);
   }
-  if (progress) progress->finish();
+  if (progress)
+    progress->finish();
   summary.steps = steps;
   summary.simulated_time = t;
   summary.wall_seconds = wall.seconds();

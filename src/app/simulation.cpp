@@ -39,7 +39,8 @@ void check_inside_domain(const io::Case& the_case, const ParticleStore& store) {
 }
 
 int wall_layers_for(const sph::Config& config) {
-  if (config.wall_layers) return *config.wall_layers;
+  if (config.wall_layers)
+    return *config.wall_layers;
   const auto kernel = sph::kernel_registry().create(config.kernel);
   const double support = kernel ? kernel->support() : 2.0;
   return static_cast<int>(std::ceil(support * config.smoothing_ratio - 1e-9));
@@ -53,10 +54,10 @@ void generate_particles(const io::Case& the_case, int wall_layers, ParticleStore
     append(store, geometry::fill(*region.shape, spacing, the_case.domain), ParticleKind::fluid);
   }
   for (const auto& wall : the_case.walls) {
-    append(store,
-           geometry::wall_layers(*wall.shape, spacing, wall_layers, wall.open_faces,
-                                 the_case.domain),
-           ParticleKind::wall);
+    append(
+        store,
+        geometry::wall_layers(*wall.shape, spacing, wall_layers, wall.open_faces, the_case.domain),
+        ParticleKind::wall);
   }
 }
 
@@ -71,8 +72,7 @@ Simulation build_simulation(const io::Case& the_case) {
   try {
     simulation.solver = std::make_unique<sph::WcsphSolver>(
         *simulation.store, the_case.domain, the_case.sph,
-        sph::FluidProperties{the_case.fluid.density, the_case.fluid.viscosity},
-        the_case.gravity);
+        sph::FluidProperties{the_case.fluid.density, the_case.fluid.viscosity}, the_case.gravity);
   } catch (const std::invalid_argument& error) {
     throw case_error(the_case, "sph", error.what());
   }

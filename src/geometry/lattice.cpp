@@ -60,8 +60,10 @@ std::vector<Vec3> sample(const LatticeBox& box, double spacing, Keep&& keep) {
 
 bool beyond_open_face(const Vec3& x, const Shape& shape, const std::vector<Face>& open_faces) {
   for (const Face& face : open_faces) {
-    if (face.side > 0 && x[face.axis] > shape.upper()[face.axis]) return true;
-    if (face.side < 0 && x[face.axis] < shape.lower()[face.axis]) return true;
+    if (face.side > 0 && x[face.axis] > shape.upper()[face.axis])
+      return true;
+    if (face.side < 0 && x[face.axis] < shape.lower()[face.axis])
+      return true;
   }
   return false;
 }

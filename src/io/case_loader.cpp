@@ -1,11 +1,245 @@
-#include <stdexcept>
+// load_case: the case-file schema, section by section, in the order of
+// docs/case-reference.md. Each section reads its keys through a Reader and ends with done(),
+// which rejects the keys it did not ask for.
+#include <filesystem>
+
+#include <fmt/format.h>
 
 #include "io/case.hpp"
+#include "io/overrides.hpp"
+#include "io/yaml_reader.hpp"
 
 namespace partimix::io {
+namespace {
 
-Case load_case(const std::string&, const std::vector<std::string>&) {
-  throw std::logic_error("load_case: being written");
+using ShapePtr = std::shared_ptr<const geometry::Shape>;
+
+const std::vector<std::string> kKernels{"cubic_spline", "hyperbolic", "wendland_c2"};
+
+std::vector<std::string> axis_names(int dimensions) {
+  return dimensions == 2 ? std::vector<std::string>{"x", "y"}
+                         : std::vector<std::string>{"x", "y", "z"};
+}
+
+std::vector<std::string> face_names(int dimensions) {
+  std::vector<std::string> names;
+  for (const std::string& axis : axis_names(dimensions)) {
+    names.push_back(axis + "-");
+    names.push_back(axis + "+");
+  }
+  return names;
+}
+
+int axis_index(const std::string& name) {
+  return name.front() - 'x';
+}
+
+geometry::Face to_face(const std::string& name) {
+  return {axis_index(name), name.back() == '+' ? 1 : -1};
+}
+
+void check_increasing(const Reader& reader, const Vec3& lo, const Vec3& hi, int dimensions) {
+  for (int axis = 0; axis < dimensions; ++axis) {
+    if (!(hi[axis] > lo[axis])) {
+      throw reader.error("max", fmt::format("must be > min on every axis; {}: max {} <= min {}",
+                                            axis_names(3)[axis], hi[axis], lo[axis]));
+    }
+  }
+}
+
+int read_dimensions(Reader& root) {
+  const int dimensions = root.required<int>("dimensions");
+  if (dimensions != 2 && dimensions != 3) {
+    throw root.error("dimensions", fmt::format("must be 2 or 3, got {}", dimensions));
+  }
+  return dimensions;
+}
+
+Domain read_domain(Reader& root, int dimensions) {
+  Reader section = root.map("domain");
+  Domain domain;
+  domain.dimensions = dimensions;
+  domain.lo = section.vector("min", dimensions);
+  domain.hi = section.vector("max", dimensions);
+  check_increasing(section, domain.lo, domain.hi, dimensions);
+  for (const std::string& axis : section.choices("periodic", axis_names(dimensions))) {
+    domain.periodic[axis_index(axis)] = true;
+  }
+  section.done();
+  return domain;
+}
+
+TimeControl read_time(Reader& root) {
+  Reader section = root.map("time");
+  TimeControl time;
+  time.end = section.required<double>("end", kPositive);
+  time.output_interval = section.required<double>("output_interval", kPositive);
+  time.sample_interval =
+      section.optional<double>("sample_interval", time.output_interval, kPositive);
+  section.done();
+  return time;
+}
+
+sph::DensityTreatment read_density(Reader& sph_section) {
+  Reader section = sph_section.optional_map("density");
+  sph::DensityTreatment density;
+  density.diffusion =
+      section.choice("diffusion", density.diffusion, {"none", "molteni", "fourtakas"});
+  density.delta = section.optional<double>("delta", density.delta, kNonNegative);
+  density.shepard_interval =
+      section.optional<int>("shepard_interval", density.shepard_interval, kNonNegative);
+  section.done();
+  return density;
+}
+
+sph::TimeStepFactors read_time_step(Reader& sph_section) {
+  Reader section = sph_section.optional_map("time_step");
+  sph::TimeStepFactors factors;
+  factors.cfl = section.optional<double>("cfl", factors.cfl, kPositive);
+  factors.viscous = section.optional<double>("viscous", factors.viscous, kPositive);
+  factors.force = section.optional<double>("force", factors.force, kPositive);
+  section.done();
+  return factors;
+}
+
+std::string read_gradient_kernel(Reader& section) {
+  std::vector<std::string> allowed{"same"};
+  allowed.insert(allowed.end(), kKernels.begin(), kKernels.end());
+  const std::string name = section.choice("gradient_kernel", "same", allowed);
+  return name == "same" ? std::string() : name;
+}
+
+sph::Config read_sph(Reader& root) {
+  Reader section = root.map("sph");
+  sph::Config config;
+  config.spacing = section.required<double>("spacing", kPositive);
+  config.smoothing_ratio =
+      section.optional<double>("smoothing_ratio", config.smoothing_ratio, kPositive);
+  config.kernel = section.choice("kernel", config.kernel, kKernels);
+  config.gradient_kernel = read_gradient_kernel(section);
+  config.equation_of_state =
+      section.choice("equation_of_state", config.equation_of_state, {"tait", "linear"});
+  config.tait_gamma = section.optional<double>("tait_gamma", config.tait_gamma, kPositive);
+  config.sound_speed = section.automatic<double>("sound_speed", kPositive);
+  config.max_velocity = section.automatic<double>("max_velocity", kPositive);
+  config.mach_factor = section.optional<double>("mach_factor", config.mach_factor, kPositive);
+  config.artificial_viscosity =
+      section.optional<double>("artificial_viscosity", config.artificial_viscosity, kNonNegative);
+  config.laminar_viscosity = section.optional<bool>("laminar_viscosity", config.laminar_viscosity);
+  config.density = read_density(section);
+  config.wall_layers = section.automatic<int>("wall_layers", at_least(1));
+  config.time_step = read_time_step(section);
+  config.sort_interval = section.optional<int>("sort_interval", config.sort_interval, at_least(1));
+  section.done();
+  return config;
+}
+
+ShapePtr read_box(Reader& item, int dimensions) {
+  Vec3 lo = item.vector("min", dimensions);
+  Vec3 hi = item.vector("max", dimensions);
+  check_increasing(item, lo, hi, dimensions);
+  if (dimensions == 2) {
+    lo.z() = -1.0;
+    hi.z() = 1.0;
+  }
+  return std::make_shared<geometry::Box>(lo, hi);
+}
+
+ShapePtr read_cylinder(Reader& item, int dimensions) {
+  if (dimensions != 3) {
+    throw item.error("shape", fmt::format("cylinder needs dimensions: 3, this case has {}; "
+                                          "expected one of: box",
+                                          dimensions));
+  }
+  const Vec3 base_centre = item.vector("center", dimensions);
+  const double radius = item.required<double>("radius", kPositive);
+  const double height = item.required<double>("height", kPositive);
+  return std::make_shared<geometry::Cylinder>(base_centre, radius, height);
+}
+
+ShapePtr read_shape(Reader& item, int dimensions) {
+  const std::string shape = item.required_choice("shape", {"box", "cylinder"});
+  return shape == "cylinder" ? read_cylinder(item, dimensions) : read_box(item, dimensions);
+}
+
+FluidSpec read_fluid(Reader& root, int dimensions) {
+  Reader section = root.map("fluid");
+  FluidSpec fluid;
+  fluid.density = section.required<double>("density", kPositive);
+  fluid.viscosity = section.required<double>("viscosity", kNonNegative);
+  for (Reader& region : section.list("regions")) {
+    fluid.regions.push_back({read_shape(region, dimensions)});
+    region.done();
+  }
+  section.done();
+  return fluid;
+}
+
+std::vector<WallSpec> read_walls(Reader& root, int dimensions) {
+  std::vector<WallSpec> walls;
+  for (Reader& item : root.optional_list("walls")) {
+    WallSpec wall{read_shape(item, dimensions), {}};
+    for (const std::string& face : item.choices("open", face_names(dimensions))) {
+      wall.open_faces.push_back(to_face(face));
+    }
+    item.done();
+    walls.push_back(wall);
+  }
+  return walls;
+}
+
+OutputSpec read_output(Reader& root) {
+  Reader section = root.optional_map("output");
+  OutputSpec output;
+  output.frames = section.optional<bool>("frames", output.frames);
+  section.done();
+  return output;
+}
+
+std::vector<AnalysisSpec> read_analyses(Reader& root, int dimensions) {
+  std::vector<AnalysisSpec> analyses;
+  for (Reader& item : root.optional_list("analyses")) {
+    AnalysisSpec analysis;
+    analysis.type = item.required_choice("type", {"front_position"});
+    analysis.axis = axis_index(item.choice("axis", "x", axis_names(dimensions)));
+    item.done();
+    analyses.push_back(analysis);
+  }
+  return analyses;
+}
+
+Case read_case(Reader& root, const std::string& path) {
+  Case result;
+  result.file = path;
+  result.name = root.optional<std::string>("name", std::filesystem::path(path).stem().string());
+  result.description = root.optional<std::string>("description", "");
+  result.solver = root.required_choice("solver", {"sph"});
+  const int dimensions = read_dimensions(root);
+  result.gravity = root.vector("gravity", dimensions, Vec3::Zero());
+  result.domain = read_domain(root, dimensions);
+  result.time = read_time(root);
+  if (result.solver == "sph") {
+    result.sph = read_sph(root);
+  }
+  result.fluid = read_fluid(root, dimensions);
+  result.walls = read_walls(root, dimensions);
+  result.output = read_output(root);
+  result.analyses = read_analyses(root, dimensions);
+  root.done();
+  return result;
+}
+
+}  // namespace
+
+Case load_case(const std::string& path, const std::vector<std::string>& overrides) {
+  YAML::Node document = load_yaml_file(path);
+  auto context = std::make_shared<ReadContext>();
+  context->file = path;
+  context->overridden = apply_overrides(document, overrides);
+  Reader root(document, context);
+  Case result = read_case(root, path);
+  result.resolved = std::move(context->resolved);
+  return result;
 }
 
 }  // namespace partimix::io

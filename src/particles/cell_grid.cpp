@@ -25,7 +25,8 @@ CellGrid::CellGrid(const Domain& domain, double radius) : domain_(domain), radiu
 }
 
 int CellGrid::cell_coordinate(double x, int axis) const {
-  if (cells_[axis] == 1) return 0;
+  if (cells_[axis] == 1)
+    return 0;
   const int c = static_cast<int>(std::floor((x - domain_.lo[axis]) / cell_size_[axis]));
   return std::clamp(c, 0, cells_[axis] - 1);
 }

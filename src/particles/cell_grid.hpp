@@ -54,7 +54,8 @@ void CellGrid::for_each_neighbour(std::size_t i, std::span<const Vec3> positions
   const double radius2 = radius_ * radius_;
   const Vec3 period = domain_.length();
   int home[3];
-  for (int axis = 0; axis < 3; ++axis) home[axis] = cell_coordinate(xi[axis], axis);
+  for (int axis = 0; axis < 3; ++axis)
+    home[axis] = cell_coordinate(xi[axis], axis);
   const int reach_z = domain_.dimensions == 3 ? 1 : 0;
   for (int dz = -reach_z; dz <= reach_z; ++dz) {
     for (int dy = -1; dy <= 1; ++dy) {
@@ -77,7 +78,8 @@ void CellGrid::for_each_neighbour(std::size_t i, std::span<const Vec3> positions
             }
           }
         }
-        if (!inside) continue;
+        if (!inside)
+          continue;
         const std::size_t cell = flat(c[0], c[1], c[2]);
         for (std::uint32_t k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) {
           const std::uint32_t j = sorted_[k];

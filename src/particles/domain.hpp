@@ -37,8 +37,10 @@ struct Domain {
     for (int axis = 0; axis < dimensions; ++axis) {
       if (periodic[axis]) {
         const double period = hi[axis] - lo[axis];
-        while (x[axis] >= hi[axis]) x[axis] -= period;
-        while (x[axis] < lo[axis]) x[axis] += period;
+        while (x[axis] >= hi[axis])
+          x[axis] -= period;
+        while (x[axis] < lo[axis])
+          x[axis] += period;
       }
     }
   }

@@ -9,8 +9,7 @@ namespace {
 
 std::string where(const ParticleStore& store, std::size_t i) {
   const Vec3& x = store.position()[i];
-  return fmt::format("particle {} at ({:.6g}, {:.6g}, {:.6g})", store.id()[i], x.x(), x.y(),
-                     x.z());
+  return fmt::format("particle {} at ({:.6g}, {:.6g}, {:.6g})", store.id()[i], x.x(), x.y(), x.z());
 }
 
 template <class Field, class IsFinite>
@@ -29,11 +28,13 @@ std::optional<std::string> first_non_finite(const ParticleStore& store, const Fi
 std::optional<std::string> find_bad_particle(const ParticleStore& store, const Domain& domain) {
   for (const auto& field : store.scalar_fields()) {
     auto bad = first_non_finite(store, field, [](double v) { return std::isfinite(v); });
-    if (bad) return bad;
+    if (bad)
+      return bad;
   }
   for (const auto& field : store.vector_fields()) {
     auto bad = first_non_finite(store, field, [](const Vec3& v) { return v.allFinite(); });
-    if (bad) return bad;
+    if (bad)
+      return bad;
   }
   for (std::size_t i = 0; i < store.size(); ++i) {
     if (!domain.contains(store.position()[i])) {

@@ -45,10 +45,14 @@ ParticleStore::ParticleStore() {
 }
 
 void ParticleStore::resize(std::size_t count) {
-  for (auto& field : scalars_) field.values.resize(count, 0.0);
-  for (auto& field : vectors_) field.values.resize(count, Vec3::Zero());
-  for (auto& field : integers_) field.values.resize(count, 0);
-  for (auto& field : id_fields_) field.values.resize(count, 0);
+  for (auto& field : scalars_)
+    field.values.resize(count, 0.0);
+  for (auto& field : vectors_)
+    field.values.resize(count, Vec3::Zero());
+  for (auto& field : integers_)
+    field.values.resize(count, 0);
+  for (auto& field : id_fields_)
+    field.values.resize(count, 0);
 }
 
 bool ParticleStore::has_name(const std::string& name) const {
@@ -86,20 +90,28 @@ void ParticleStore::reorder(std::span<const std::uint32_t> new_to_old) {
   if (new_to_old.size() != size()) {
     throw std::logic_error("reorder: permutation size differs from particle count");
   }
-  for (auto& field : scalars_) permute(field.values, new_to_old, scratch_scalar_);
-  for (auto& field : vectors_) permute(field.values, new_to_old, scratch_vector_);
-  for (auto& field : integers_) permute(field.values, new_to_old, scratch_integer_);
-  for (auto& field : id_fields_) permute(field.values, new_to_old, scratch_integer_);
+  for (auto& field : scalars_)
+    permute(field.values, new_to_old, scratch_scalar_);
+  for (auto& field : vectors_)
+    permute(field.values, new_to_old, scratch_vector_);
+  for (auto& field : integers_)
+    permute(field.values, new_to_old, scratch_integer_);
+  for (auto& field : id_fields_)
+    permute(field.values, new_to_old, scratch_integer_);
 }
 
 std::size_t ParticleStore::bytes() const {
   std::size_t total = scratch_scalar_.capacity() * sizeof(double) +
                       scratch_vector_.capacity() * sizeof(Vec3) +
                       scratch_integer_.capacity() * sizeof(std::int64_t);
-  for (const auto& field : scalars_) total += field.values.capacity() * sizeof(double);
-  for (const auto& field : vectors_) total += field.values.capacity() * sizeof(Vec3);
-  for (const auto& field : integers_) total += field.values.capacity() * sizeof(std::int32_t);
-  for (const auto& field : id_fields_) total += field.values.capacity() * sizeof(std::int64_t);
+  for (const auto& field : scalars_)
+    total += field.values.capacity() * sizeof(double);
+  for (const auto& field : vectors_)
+    total += field.values.capacity() * sizeof(Vec3);
+  for (const auto& field : integers_)
+    total += field.values.capacity() * sizeof(std::int32_t);
+  for (const auto& field : id_fields_)
+    total += field.values.capacity() * sizeof(std::int64_t);
   return total;
 }
 

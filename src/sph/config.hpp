@@ -22,7 +22,7 @@ struct Config {
   double spacing = 0.0;          // initial particle spacing dp [m]
   double smoothing_ratio = 1.5;  // h / dp (docs/sph.md, "Choice of h")
   std::string kernel = "wendland_c2";
-  std::string gradient_kernel;  // empty: the same as kernel
+  std::string gradient_kernel;             // empty: the same as kernel
   std::string equation_of_state = "tait";  // tait | linear
   double tait_gamma = 7.0;
   std::optional<double> sound_speed;   // c0 [m/s]; when absent, mach_factor * max_velocity

@@ -23,7 +23,8 @@ Rates rates_of(std::size_t i, const Fields& f, const CellGrid& grid, const Kerne
   const double inverse_c2 = 1.0 / (p.sound_speed * p.sound_speed);
   Rates sum;
   grid.for_each_neighbour(i, f.position, [&](std::size_t j, const Vec3& r_ij, double r2) {
-    if (j == i) return;
+    if (j == i)
+      return;
     const double r = std::sqrt(r2);
     const Vec3 grad = (kernel.derivative(r) / r) * r_ij;  // grad_i W_ij
     const double r_dot_grad = r_ij.dot(grad);
@@ -41,7 +42,8 @@ Rates rates_of(std::size_t i, const Fields& f, const CellGrid& grid, const Kerne
     const double approach = v_ij_viscous.dot(r_ij);
     if (p.artificial_viscosity > 0.0 && approach < 0.0) {
       const double mu_ij = p.h * approach / (r2 + p.eta2);
-      const double pi_ij = -p.artificial_viscosity * p.sound_speed * mu_ij / (0.5 * (rho_i + rho_j));
+      const double pi_ij =
+          -p.artificial_viscosity * p.sound_speed * mu_ij / (0.5 * (rho_i + rho_j));
       sum.acceleration -= (m_j * pi_ij) * grad;
     }
     if (p.diffusion != DensityDiffusion::none && fluid_j) {

@@ -21,7 +21,8 @@ class KernelTable {
   double interpolate(const std::vector<double>& table, double r) const {
     const double s = r * inverse_step_;
     const auto k = static_cast<std::size_t>(s);
-    if (k + 1 >= table.size()) return 0.0;
+    if (k + 1 >= table.size())
+      return 0.0;
     const double t = s - static_cast<double>(k);
     return table[k] + t * (table[k + 1] - table[k]);
   }

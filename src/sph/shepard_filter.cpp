@@ -13,7 +13,8 @@ void apply_shepard_filter(Fields& f, const CellGrid& grid, const KernelTable& ke
   for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
     const auto i = static_cast<std::size_t>(ii);
     scratch[i] = f.density[i];
-    if (!is_fluid(f.kind[i])) continue;
+    if (!is_fluid(f.kind[i]))
+      continue;
     double mass_sum = 0.0;
     double volume_sum = 0.0;
     grid.for_each_neighbour(i, f.position, [&](std::size_t j, const Vec3&, double r2) {

@@ -11,13 +11,15 @@ void update_wall_state(Fields& f, const CellGrid& grid, const KernelTable& kerne
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
     const auto w = static_cast<std::size_t>(ii);
-    if (is_fluid(f.kind[w])) continue;
+    if (is_fluid(f.kind[w]))
+      continue;
     double weight = 0.0;
     double pressure = 0.0;
     Vec3 density_moment = Vec3::Zero();
     Vec3 velocity = Vec3::Zero();
     grid.for_each_neighbour(w, f.position, [&](std::size_t j, const Vec3& r_wj, double r2) {
-      if (!is_fluid(f.kind[j])) return;
+      if (!is_fluid(f.kind[j]))
+        return;
       const double W = kernel.value(std::sqrt(r2));
       weight += W;
       pressure += f.pressure[j] * W;

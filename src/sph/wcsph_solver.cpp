@@ -15,27 +15,32 @@ namespace {
 
 std::unique_ptr<Kernel> make_kernel(const std::string& name, const std::string& key) {
   auto kernel = kernel_registry().create(name);
-  if (!kernel) throw std::invalid_argument(key + ": unknown kernel '" + name + "'");
+  if (!kernel)
+    throw std::invalid_argument(key + ": unknown kernel '" + name + "'");
   return kernel;
 }
 
 DensityDiffusion diffusion_from(const std::string& name) {
-  if (name == "none") return DensityDiffusion::none;
-  if (name == "molteni") return DensityDiffusion::molteni;
-  if (name == "fourtakas") return DensityDiffusion::fourtakas;
+  if (name == "none")
+    return DensityDiffusion::none;
+  if (name == "molteni")
+    return DensityDiffusion::molteni;
+  if (name == "fourtakas")
+    return DensityDiffusion::fourtakas;
   throw std::invalid_argument("sph.density.diffusion: unknown model '" + name + "'");
 }
 
 Vec3 without_periodic_axes(const Vec3& gravity, const Domain& domain) {
   Vec3 g = gravity;
   for (int axis = 0; axis < 3; ++axis) {
-    if (domain.periodic[axis]) g[axis] = 0.0;
+    if (domain.periodic[axis])
+      g[axis] = 0.0;
   }
   return g;
 }
 
-Parameters make_parameters(const Config& config, const FluidProperties& fluid,
-                           const Vec3& gravity, const Domain& domain, const ParticleStore& store) {
+Parameters make_parameters(const Config& config, const FluidProperties& fluid, const Vec3& gravity,
+                           const Domain& domain, const ParticleStore& store) {
   Parameters p;
   p.dimensions = domain.dimensions;
   p.spacing = config.spacing;
@@ -63,9 +68,9 @@ WcsphSolver::WcsphSolver(ParticleStore& store, const Domain& domain, const Confi
       parameters_(make_parameters(config, fluid, gravity, domain, store)),
       fields_(store),
       kernel_(make_kernel(config.kernel, "sph.kernel")),
-      gradient_kernel_(make_kernel(
-          config.gradient_kernel.empty() ? config.kernel : config.gradient_kernel,
-          "sph.gradient_kernel")),
+      gradient_kernel_(
+          make_kernel(config.gradient_kernel.empty() ? config.kernel : config.gradient_kernel,
+                      "sph.gradient_kernel")),
       eos_(equation_of_state_registry().create(
           config.equation_of_state,
           EosParameters{fluid.density, parameters_.sound_speed, config.tait_gamma})),
@@ -104,7 +109,8 @@ void WcsphSolver::initialise_fluid() {
 }
 
 void WcsphSolver::wrap_positions() {
-  for (auto& x : fields_.position) domain_.wrap(x);
+  for (auto& x : fields_.position)
+    domain_.wrap(x);
 }
 
 void WcsphSolver::sort_by_cell() {
@@ -115,7 +121,8 @@ void WcsphSolver::sort_by_cell() {
 void WcsphSolver::interact() {
   grid_.build(fields_.position);
   for (std::size_t i = 0; i < store_.size(); ++i) {
-    if (store_.is_fluid(i)) fields_.pressure[i] = eos_->pressure(fields_.density[i]);
+    if (store_.is_fluid(i))
+      fields_.pressure[i] = eos_->pressure(fields_.density[i]);
   }
   update_wall_state(fields_, grid_, kernel_table_, *eos_, parameters_);
   const RateExtremes extremes = compute_fluid_rates(fields_, grid_, gradient_table_, parameters_);
@@ -144,7 +151,8 @@ void WcsphSolver::predict(double dt) {
   start_velocity_.resize(n);
   start_density_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    if (!store_.is_fluid(i)) continue;
+    if (!store_.is_fluid(i))
+      continue;
     start_position_[i] = fields_.position[i];
     start_velocity_[i] = fields_.velocity[i];
     start_density_[i] = fields_.density[i];
@@ -159,7 +167,8 @@ void WcsphSolver::predict(double dt) {
 // update rho^{n+1} = rho^n (2 - eps) / (2 + eps), eps = -(drho/dt / rho)^{n+1/2} dt.
 void WcsphSolver::correct(double dt) {
   for (std::size_t i = 0; i < store_.size(); ++i) {
-    if (!store_.is_fluid(i)) continue;
+    if (!store_.is_fluid(i))
+      continue;
     const double epsilon = -fields_.density_rate[i] / fields_.density[i] * dt;
     fields_.velocity[i] = start_velocity_[i] + dt * fields_.acceleration[i];
     fields_.position[i] += 0.5 * dt * fields_.velocity[i];
@@ -190,7 +199,8 @@ namespace partimix::sph {
 
 std::map<std::string, double> WcsphSolver::derived_parameters() const {
   std::size_t fluid = 0;
-  for (std::size_t i = 0; i < store_.size(); ++i) fluid += store_.is_fluid(i) ? 1 : 0;
+  for (std::size_t i = 0; i < store_.size(); ++i)
+    fluid += store_.is_fluid(i) ? 1 : 0;
   return {{"smoothing_length [m]", parameters_.h},
           {"sound_speed [m/s]", parameters_.sound_speed},
           {"particle_mass [kg]", fields_.mass.empty() ? 0.0 : fields_.mass.front()},

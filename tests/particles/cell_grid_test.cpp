@@ -29,7 +29,8 @@ Pairs brute_force(const Domain& domain, const std::vector<Vec3>& x, double radiu
   Pairs pairs;
   for (std::size_t i = 0; i < x.size(); ++i) {
     for (std::size_t j = 0; j < x.size(); ++j) {
-      if (domain.displacement(x[i], x[j]).norm() < radius) pairs.emplace_back(i, j);
+      if (domain.displacement(x[i], x[j]).norm() < radius)
+        pairs.emplace_back(i, j);
     }
   }
   return pairs;
@@ -97,7 +98,8 @@ TEST(CellGrid, CellOrderIsAPermutation) {
   grid.build(x);
   std::vector<std::uint32_t> order(grid.cell_order().begin(), grid.cell_order().end());
   std::sort(order.begin(), order.end());
-  for (std::uint32_t k = 0; k < order.size(); ++k) EXPECT_EQ(order[k], k);
+  for (std::uint32_t k = 0; k < order.size(); ++k)
+    EXPECT_EQ(order[k], k);
 }
 
 }  // namespace

@@ -47,7 +47,9 @@ class KernelTest : public ::testing::TestWithParam<std::string> {
   std::unique_ptr<Kernel> kernel = kernel_registry().create(GetParam());
 };
 
-TEST_P(KernelTest, IsRegistered) { ASSERT_NE(kernel, nullptr); }
+TEST_P(KernelTest, IsRegistered) {
+  ASSERT_NE(kernel, nullptr);
+}
 
 // The midpoint rule at h/40 (2D) and h/20 (3D) integrates these piecewise polynomials to
 // about 1e-5; 1e-4 leaves room for the kinks of the cubic spline and hyperbolic kernels.

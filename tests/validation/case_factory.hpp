@@ -23,9 +23,9 @@ inline io::Case tank_2d(double width, double depth, double spacing) {
   c.fluid.viscosity = 1.0e-3;
   c.fluid.regions.push_back(
       {std::make_shared<geometry::Box>(Vec3(0.0, 0.0, -1.0), Vec3(width, depth, 1.0))});
-  c.walls.push_back({std::make_shared<geometry::Box>(Vec3(0.0, 0.0, -1.0),
-                                                     Vec3(width, 2.0 * depth, 1.0)),
-                     {geometry::Face{1, 1}}});
+  c.walls.push_back(
+      {std::make_shared<geometry::Box>(Vec3(0.0, 0.0, -1.0), Vec3(width, 2.0 * depth, 1.0)),
+       {geometry::Face{1, 1}}});
   return c;
 }
 
@@ -53,6 +53,32 @@ inline io::Case poiseuille_2d(double width, double length, double spacing, doubl
       std::make_shared<geometry::Box>(Vec3(0.0, 0.0, -1.0), Vec3(length, width, 1.0));
   c.fluid.regions.push_back({channel});
   c.walls.push_back({channel, {}});
+  return c;
+}
+
+}  // namespace partimix::testing_cases
+
+namespace partimix::testing_cases {
+
+// Dam break of Koshizuka and Oka (1996): a water column `column` wide and 2 `column` high at the
+// left end of a tank 4 `column` long, walls on floor and sides, open top.
+inline io::Case dam_break_2d(double column, double spacing) {
+  io::Case c;
+  c.name = "dam_break_2d";
+  c.solver = "sph";
+  c.domain.dimensions = 2;
+  const double margin = 4.0 * spacing;
+  c.domain.lo = Vec3(-margin, -margin, 0.0);
+  c.domain.hi = Vec3(4.0 * column + margin, 3.0 * column, 0.0);
+  c.gravity = Vec3(0.0, -9.81, 0.0);
+  c.sph.spacing = spacing;
+  c.fluid.density = 1000.0;
+  c.fluid.viscosity = 1.0e-3;
+  c.fluid.regions.push_back(
+      {std::make_shared<geometry::Box>(Vec3(0.0, 0.0, -1.0), Vec3(column, 2.0 * column, 1.0))});
+  c.walls.push_back(
+      {std::make_shared<geometry::Box>(Vec3(0.0, 0.0, -1.0), Vec3(4.0 * column, 3.0 * column, 1.0)),
+       {geometry::Face{1, 1}}});
   return c;
 }
 

@@ -1,12 +1,14 @@
 // Hydrostatic tank: after settling, the pressure of fluid particles follows rho0 g (H - y)
 // and no fluid particle crosses a wall.
 //
-// Set-up: 2D tank 1.0 m wide, water 0.5 m deep, dp = 0.02 m (h = 1.3 dp), Wendland C2,
-// Tait EOS, c0 = 10 sqrt(2 g H), Fourtakas delta-SPH, laminar viscosity raised to 0.5 Pa s to
-// damp the start-up sloshing within the simulated 2 s (the steady state does not depend on it).
-// Tolerance: the pressure of particles deeper than 2h (away from the free-surface kernel
-// truncation) within 3% of rho0 g H of the exact value; in WCSPH the pressure noise at
-// dp = H/25 with delta-SPH is typically 1%.
+// Set-up: 2D tank 1.0 m wide, water 0.5 m deep, dp = 0.025 m (H / dp = 20, h = 1.5 dp),
+// Wendland C2, Tait EOS, c0 = 10 sqrt(2 g H), Fourtakas delta-SPH. The viscosity is raised to
+// 50 Pa s so that the start-up motion (the free-surface layer relaxing) is damped within the
+// simulated 1.2 s; the hydrostatic state does not depend on it.
+// Tolerances, for particles deeper than 2h (below the free-surface kernel truncation):
+// largest pressure error 2.5% and RMS error 1.5% of rho0 g H. The free-surface layer settles
+// about a third of a spacing higher than the initial lattice (dp / H = 5%, so ~1.5%), and the
+// weak compressibility changes the density by up to 0.5% (measured: 1.2% largest, 0.7% RMS).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -22,12 +24,13 @@ TEST(HydrostaticTank, PressureFollowsDepthAndNoParticleCrossesTheWall) {
   const double depth = 0.5;
   const double g = 9.81;
   const double rho0 = 1000.0;
-  io::Case c = testing_cases::tank_2d(width, depth, 0.02);
-  c.fluid.viscosity = 0.5;
+  const double spacing = 0.025;
+  io::Case c = testing_cases::tank_2d(width, depth, spacing);
+  c.fluid.viscosity = 50.0;
   app::Simulation sim = app::build_simulation(c);
 
   double t = 0.0;
-  while (t < 2.0) {
+  while (t < 1.2) {
     const double dt = sim.solver->stable_dt();
     sim.solver->step(dt);
     t += dt;
@@ -35,12 +38,13 @@ TEST(HydrostaticTank, PressureFollowsDepthAndNoParticleCrossesTheWall) {
 
   const ParticleStore& store = sim.solver->particles();
   const auto& pressure = store.find_scalar("pressure")->values;
-  const double h = 1.3 * 0.02;
+  const double h = c.sph.smoothing_length();
   double worst = 0.0;
   double sum2 = 0.0;
   int count = 0;
   for (std::size_t i = 0; i < store.size(); ++i) {
-    if (!store.is_fluid(i)) continue;
+    if (!store.is_fluid(i))
+      continue;
     const Vec3& x = store.position()[i];
     EXPECT_GT(x.y(), 0.0) << "fluid particle below the tank floor";
     EXPECT_GT(x.x(), 0.0) << "fluid particle through the left wall";
@@ -58,7 +62,8 @@ TEST(HydrostaticTank, PressureFollowsDepthAndNoParticleCrossesTheWall) {
   RecordProperty("max_relative_pressure_error", std::to_string(worst));
   RecordProperty("rms_relative_pressure_error", std::to_string(rms));
   std::printf("hydrostatic tank: max error %.4f, rms error %.4f of rho g H\n", worst, rms);
-  EXPECT_LT(worst, 0.03);
+  EXPECT_LT(worst, 0.025);
+  EXPECT_LT(rms, 0.015);
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // 2D Poiseuille flow between periodic plates driven by a body force, against the transient
 // series solution of Morris, Fox and Zhu (1997), eq. 21:
 //   u(y, t) = F / (2 nu) y (L - y)
-//             - sum_n 4 F L^2 / (nu pi^3 (2n+1)^3) sin((2n+1) pi y / L) exp(-(2n+1)^2 pi^2 nu t / L^2)
+//             - sum_n 4 F L^2 / (nu pi^3 (2n+1)^3) sin((2n+1) pi y / L) exp(-(2n+1)^2 pi^2 nu t /
+//             L^2)
 // Parameters of Morris et al.: L = 1 mm, nu = 1e-6 m^2/s, rho = 1000 kg/m^3, F = 1e-4 m/s^2,
 // so u_max = F L^2 / (8 nu) = 1.25e-5 m/s and Re = 1.25e-2; c0 = 10 u_max.
 // Resolution L / dp = 20, h = 1.5 dp. Tolerances, at each compared time: the L2 deviation from
@@ -47,7 +48,8 @@ Deviation deviation_from_exact(const ParticleStore& store, double t) {
   Deviation d;
   int count = 0;
   for (std::size_t i = 0; i < store.size(); ++i) {
-    if (!store.is_fluid(i)) continue;
+    if (!store.is_fluid(i))
+      continue;
     const Vec3& x = store.position()[i];
     const Vec3 error = store.velocity()[i] - Vec3(exact_velocity(x.y(), t), 0.0, 0.0);
     d.l2 += error.squaredNorm();

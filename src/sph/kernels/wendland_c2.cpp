@@ -5,13 +5,15 @@
 namespace partimix::sph {
 
 double WendlandC2::shape(double q) const {
-  if (q >= 2.0) return 0.0;
+  if (q >= 2.0)
+    return 0.0;
   const double a = 1.0 - 0.5 * q;
   return a * a * a * a * (2.0 * q + 1.0);
 }
 
 double WendlandC2::shape_derivative(double q) const {
-  if (q >= 2.0) return 0.0;
+  if (q >= 2.0)
+    return 0.0;
   const double a = 1.0 - 0.5 * q;
   return -5.0 * q * a * a * a;
 }
