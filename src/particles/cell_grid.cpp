@@ -13,6 +13,7 @@ CellGrid::CellGrid(const Domain& domain, double radius) : domain_(domain), radiu
   }
   const Vec3 length = domain.length();
   cell_size_ = length;
+  periodic_length_ = length;
   for (int axis = 0; axis < domain.dimensions; ++axis) {
     cells_[axis] = std::max(1, static_cast<int>(std::floor(length[axis] / radius)));
     cell_size_[axis] = length[axis] / cells_[axis];

@@ -2,8 +2,10 @@
 // Uniform cell-linked list (DESIGN.md, "Data and speed"): cells at least one interaction radius
 // wide; a particle gathers from the 27 (3D) or 9 (2D) cells around its own. Built each step by a
 // counting sort into buffers that are reused, so building does not allocate once sized.
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -26,15 +28,27 @@ class CellGrid {
   double radius() const { return radius_; }
   const std::array<int, 3>& cells_per_axis() const { return cells_; }
 
-  // Calls fn(j, r_ij, r2) for every particle j (i itself included) with r2 = |r_ij|^2 < radius^2,
-  // where r_ij = x_i - x_j through the nearest periodic image.
+  // Calls fn(j, r_ij, r2) for every particle j < below (i itself included) with
+  // r2 = |r_ij|^2 < radius^2, where r_ij = x_i - x_j through the nearest periodic image.
   template <class Fn>
-  void for_each_neighbour(std::size_t i, std::span<const Vec3> positions, Fn&& fn) const;
+  void for_each_neighbour(std::size_t i, std::span<const Vec3> positions, Fn&& fn,
+                          std::size_t below = std::numeric_limits<std::size_t>::max()) const;
 
   std::size_t bytes() const;
 
  private:
   int cell_coordinate(double x, int axis) const;
+  // Brings a neighbour cell coordinate into the grid across a periodic axis, setting the shift
+  // of the image; false when it lies outside a non-periodic axis.
+  bool wrap(int& c, int axis, double& shift) const {
+    if (c >= 0 && c < cells_[axis])
+      return true;
+    if (!domain_.periodic[axis])
+      return false;
+    shift = c < 0 ? periodic_length_[axis] : -periodic_length_[axis];
+    c = c < 0 ? c + cells_[axis] : c - cells_[axis];
+    return true;
+  }
   std::size_t flat(int cx, int cy, int cz) const {
     return (static_cast<std::size_t>(cz) * cells_[1] + cy) * cells_[0] + cx;
   }
@@ -43,52 +57,57 @@ class CellGrid {
   double radius_;
   std::array<int, 3> cells_{1, 1, 1};
   Vec3 cell_size_;
+  Vec3 periodic_length_;
   std::vector<std::uint32_t> cell_of_;
   std::vector<std::uint32_t> cell_start_;
   std::vector<std::uint32_t> sorted_;
 };
 
 template <class Fn>
-void CellGrid::for_each_neighbour(std::size_t i, std::span<const Vec3> positions, Fn&& fn) const {
+void CellGrid::for_each_neighbour(std::size_t i, std::span<const Vec3> positions, Fn&& fn,
+                                  std::size_t below) const {
   const Vec3& xi = positions[i];
   const double radius2 = radius_ * radius_;
-  const Vec3 period = domain_.length();
-  int home[3];
-  for (int axis = 0; axis < 3; ++axis)
-    home[axis] = cell_coordinate(xi[axis], axis);
+  // Visits the particles of sorted_[first, last) that lie within the radius of i.
+  auto visit = [&](std::uint32_t first, std::uint32_t last, double shift_x, double shift_y,
+                   double shift_z) {
+    const Vec3 shifted = xi + Vec3(shift_x, shift_y, shift_z);
+    for (std::uint32_t k = first; k < last; ++k) {
+      const std::uint32_t j = sorted_[k];
+      if (j >= below)
+        continue;
+      const Vec3 rij = shifted - positions[j];
+      const double r2 = rij.squaredNorm();
+      if (r2 < radius2)
+        fn(static_cast<std::size_t>(j), rij, r2);
+    }
+  };
+  const int hx = cell_coordinate(xi[0], 0);
+  const int hy = cell_coordinate(xi[1], 1);
+  const int hz = cell_coordinate(xi[2], 2);
   const int reach_z = domain_.dimensions == 3 ? 1 : 0;
   for (int dz = -reach_z; dz <= reach_z; ++dz) {
+    int cz = hz + dz;
+    double shift_z = 0.0;
+    if (!wrap(cz, 2, shift_z))
+      continue;
     for (int dy = -1; dy <= 1; ++dy) {
-      for (int dx = -1; dx <= 1; ++dx) {
-        const int offset[3] = {dx, dy, dz};
-        int c[3];
-        Vec3 shift = Vec3::Zero();
-        bool inside = true;
-        for (int axis = 0; axis < 3 && inside; ++axis) {
-          c[axis] = home[axis] + offset[axis];
-          if (c[axis] < 0 || c[axis] >= cells_[axis]) {
-            if (!domain_.periodic[axis] || cells_[axis] == 1) {
-              inside = false;
-            } else if (c[axis] < 0) {
-              c[axis] += cells_[axis];
-              shift[axis] = period[axis];
-            } else {
-              c[axis] -= cells_[axis];
-              shift[axis] = -period[axis];
-            }
-          }
-        }
-        if (!inside)
-          continue;
-        const std::size_t cell = flat(c[0], c[1], c[2]);
-        for (std::uint32_t k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) {
-          const std::uint32_t j = sorted_[k];
-          const Vec3 rij = xi - positions[j] + shift;
-          const double r2 = rij.squaredNorm();
-          if (r2 < radius2) {
-            fn(static_cast<std::size_t>(j), rij, r2);
-          }
-        }
+      int cy = hy + dy;
+      double shift_y = 0.0;
+      if (!wrap(cy, 1, shift_y))
+        continue;
+      // The cells hx-1 .. hx+1 of a row are adjacent in the sorted order: one range.
+      const int from = std::max(hx - 1, 0);
+      const int to = std::min(hx + 1, cells_[0] - 1);
+      visit(cell_start_[flat(from, cy, cz)], cell_start_[flat(to, cy, cz) + 1], 0.0, shift_y,
+            shift_z);
+      if (domain_.periodic[0] && hx - 1 < 0) {
+        const std::size_t cell = flat(cells_[0] - 1, cy, cz);
+        visit(cell_start_[cell], cell_start_[cell + 1], periodic_length_[0], shift_y, shift_z);
+      }
+      if (domain_.periodic[0] && hx + 1 >= cells_[0]) {
+        const std::size_t cell = flat(0, cy, cz);
+        visit(cell_start_[cell], cell_start_[cell + 1], -periodic_length_[0], shift_y, shift_z);
       }
     }
   }

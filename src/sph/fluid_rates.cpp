@@ -59,19 +59,14 @@ Rates rates_of(std::size_t i, const Fields& f, const CellGrid& grid, const Kerne
 
 }  // namespace
 
-RateExtremes compute_fluid_rates(Fields& f, const CellGrid& grid, const KernelTable& kernel,
-                                 const Parameters& p) {
-  const auto n = static_cast<std::ptrdiff_t>(f.position.size());
+RateExtremes compute_fluid_rates(Fields& f, std::size_t fluid_count, const CellGrid& grid,
+                                 const KernelTable& kernel, const Parameters& p) {
+  const auto n = static_cast<std::ptrdiff_t>(fluid_count);
   double max_acceleration2 = 0.0;
   double max_speed2 = 0.0;
 #pragma omp parallel for schedule(dynamic, 512) reduction(max : max_acceleration2, max_speed2)
   for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
     const auto i = static_cast<std::size_t>(ii);
-    if (!is_fluid(f.kind[i])) {
-      f.density_rate[i] = 0.0;
-      f.acceleration[i] = Vec3::Zero();
-      continue;
-    }
     const Rates rates = rates_of(i, f, grid, kernel, p);
     f.density_rate[i] = rates.density_rate;
     f.acceleration[i] = rates.acceleration + p.gravity;

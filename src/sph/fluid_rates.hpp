@@ -15,8 +15,9 @@ struct RateExtremes {
   double max_speed = 0.0;         // over fluid particles [m/s]
 };
 
-// Needs pressures of all particles and the wall state of this instant.
-RateExtremes compute_fluid_rates(Fields& fields, const CellGrid& grid,
+// Needs pressures of all particles and the wall state of this instant. Fluid particles are
+// [0, fluid_count) of the fields.
+RateExtremes compute_fluid_rates(Fields& fields, std::size_t fluid_count, const CellGrid& grid,
                                  const KernelTable& gradient_kernel, const Parameters& parameters);
 
 }  // namespace partimix::sph

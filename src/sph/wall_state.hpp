@@ -11,7 +11,9 @@
 
 namespace partimix::sph {
 
-void update_wall_state(Fields& fields, const CellGrid& grid, const KernelTable& kernel,
-                       const EquationOfState& eos, const Parameters& parameters);
+// Fluid particles are [0, fluid_count) of the fields, walls the rest.
+void update_wall_state(Fields& fields, std::size_t fluid_count, const CellGrid& grid,
+                       const KernelTable& kernel, const EquationOfState& eos,
+                       const Parameters& parameters);
 
 }  // namespace partimix::sph

@@ -82,6 +82,8 @@ WcsphSolver::WcsphSolver(ParticleStore& store, const Domain& domain, const Confi
                                 "'");
   }
   initialise_fluid();
+  fluid_count_ = static_cast<std::size_t>(std::count_if(
+      fields_.kind.begin(), fields_.kind.end(), [](std::int32_t k) { return is_fluid(k); }));
   sort_by_cell();
   interact();
 }
@@ -113,19 +115,25 @@ void WcsphSolver::wrap_positions() {
     domain_.wrap(x);
 }
 
+// Orders the store by kind, then by cell: fluid particles take [0, fluid_count_) and, as the
+// grid's counting sort keeps index order within a cell, come before walls in every cell.
 void WcsphSolver::sort_by_cell() {
   grid_.build(fields_.position);
-  store_.reorder(grid_.cell_order());
+  const auto order = grid_.cell_order();
+  sort_order_.assign(order.begin(), order.end());
+  std::stable_partition(sort_order_.begin(), sort_order_.end(),
+                        [&](std::uint32_t i) { return store_.is_fluid(i); });
+  store_.reorder(sort_order_);
 }
 
 void WcsphSolver::interact() {
   grid_.build(fields_.position);
-  for (std::size_t i = 0; i < store_.size(); ++i) {
-    if (store_.is_fluid(i))
-      fields_.pressure[i] = eos_->pressure(fields_.density[i]);
+  for (std::size_t i = 0; i < fluid_count_; ++i) {
+    fields_.pressure[i] = eos_->pressure(fields_.density[i]);
   }
-  update_wall_state(fields_, grid_, kernel_table_, *eos_, parameters_);
-  const RateExtremes extremes = compute_fluid_rates(fields_, grid_, gradient_table_, parameters_);
+  update_wall_state(fields_, fluid_count_, grid_, kernel_table_, *eos_, parameters_);
+  const RateExtremes extremes =
+      compute_fluid_rates(fields_, fluid_count_, grid_, gradient_table_, parameters_);
   max_acceleration_ = extremes.max_acceleration;
   max_speed_ = extremes.max_speed;
 }
@@ -146,13 +154,13 @@ double WcsphSolver::stable_dt() const {
 
 // Symplectic position-Verlet (docs/sph.md, "Time integration"), half step.
 void WcsphSolver::predict(double dt) {
-  const std::size_t n = store_.size();
-  start_position_.resize(n);
-  start_velocity_.resize(n);
-  start_density_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!store_.is_fluid(i))
-      continue;
+  start_position_.resize(fluid_count_);
+  start_velocity_.resize(fluid_count_);
+  start_density_.resize(fluid_count_);
+  const auto n = static_cast<std::ptrdiff_t>(fluid_count_);
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
+    const auto i = static_cast<std::size_t>(ii);
     start_position_[i] = fields_.position[i];
     start_velocity_[i] = fields_.velocity[i];
     start_density_[i] = fields_.density[i];
@@ -166,9 +174,10 @@ void WcsphSolver::predict(double dt) {
 // Corrector: full step from the start state with the rates at the half step; the density
 // update rho^{n+1} = rho^n (2 - eps) / (2 + eps), eps = -(drho/dt / rho)^{n+1/2} dt.
 void WcsphSolver::correct(double dt) {
-  for (std::size_t i = 0; i < store_.size(); ++i) {
-    if (!store_.is_fluid(i))
-      continue;
+  const auto n = static_cast<std::ptrdiff_t>(fluid_count_);
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
+    const auto i = static_cast<std::size_t>(ii);
     const double epsilon = -fields_.density_rate[i] / fields_.density[i] * dt;
     fields_.velocity[i] = start_velocity_[i] + dt * fields_.acceleration[i];
     fields_.position[i] += 0.5 * dt * fields_.velocity[i];
@@ -198,9 +207,7 @@ void WcsphSolver::step(double dt) {
 namespace partimix::sph {
 
 std::map<std::string, double> WcsphSolver::derived_parameters() const {
-  std::size_t fluid = 0;
-  for (std::size_t i = 0; i < store_.size(); ++i)
-    fluid += store_.is_fluid(i) ? 1 : 0;
+  const std::size_t fluid = fluid_count_;
   return {{"smoothing_length [m]", parameters_.h},
           {"sound_speed [m/s]", parameters_.sound_speed},
           {"particle_mass [kg]", fields_.mass.empty() ? 0.0 : fields_.mass.front()},

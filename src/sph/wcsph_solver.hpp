@@ -61,6 +61,8 @@ class WcsphSolver final : public Solver {
   double max_acceleration_ = 0.0;
   double max_speed_ = 0.0;
   std::size_t steps_ = 0;
+  std::size_t fluid_count_ = 0;  // fluid particles are [0, fluid_count_) of the store
+  std::vector<std::uint32_t> sort_order_;
   std::vector<Vec3> start_position_;
   std::vector<Vec3> start_velocity_;
   std::vector<double> start_density_;
