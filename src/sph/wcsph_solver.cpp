@@ -119,10 +119,12 @@ void WcsphSolver::wrap_positions() {
 // grid's counting sort keeps index order within a cell, come before walls in every cell.
 void WcsphSolver::sort_by_cell() {
   grid_.build(fields_.position);
-  const auto order = grid_.cell_order();
-  sort_order_.assign(order.begin(), order.end());
-  std::stable_partition(sort_order_.begin(), sort_order_.end(),
-                        [&](std::uint32_t i) { return store_.is_fluid(i); });
+  sort_order_.resize(store_.size());
+  std::size_t next_fluid = 0;
+  std::size_t next_wall = fluid_count_;
+  for (const std::uint32_t i : grid_.cell_order()) {
+    sort_order_[store_.is_fluid(i) ? next_fluid++ : next_wall++] = i;
+  }
   store_.reorder(sort_order_);
 }
 
