@@ -29,7 +29,7 @@ test-sanitize: deps
 	cd $(SANITIZE_DIR) && ctest --output-on-failure -j $(JOBS) -L unit
 
 bench: build
-	./$(BUILD_DIR)/partimix_bench --benchmark_counters_tabular=true
+	./$(BUILD_DIR)/bench/partimix_bench --benchmark_counters_tabular=true
 
 format:
 	find src tests bench -name '*.cpp' -o -name '*.hpp' | xargs clang-format -i

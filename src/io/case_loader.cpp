@@ -86,8 +86,9 @@ sph::DensityTreatment read_density(Reader& sph_section) {
   density.diffusion =
       section.choice("diffusion", density.diffusion, {"none", "molteni", "fourtakas"});
   density.delta = section.optional<double>("delta", density.delta, kNonNegative);
+  density.shepard = section.optional<bool>("shepard", density.shepard);
   density.shepard_interval =
-      section.optional<int>("shepard_interval", density.shepard_interval, kNonNegative);
+      section.optional<int>("shepard_interval", density.shepard_interval, at_least(1));
   section.done();
   return density;
 }

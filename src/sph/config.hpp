@@ -15,7 +15,8 @@ struct TimeStepFactors {
 struct DensityTreatment {
   std::string diffusion = "fourtakas";  // none | molteni | fourtakas (delta-SPH)
   double delta = 0.1;                   // delta-SPH coefficient
-  int shepard_interval = 0;             // Shepard re-initialisation every N steps; 0: off
+  bool shepard = false;                 // Shepard density re-initialisation (seed eq. 20)
+  int shepard_interval = 20;            // ... every N steps
 };
 
 struct Config {

@@ -193,7 +193,7 @@ void WcsphSolver::step(double dt) {
   interact();
   correct(dt);
   ++steps_;
-  if (config_.density.shepard_interval > 0 &&
+  if (config_.density.shepard &&
       steps_ % static_cast<std::size_t>(config_.density.shepard_interval) == 0) {
     grid_.build(fields_.position);
     apply_shepard_filter(fields_, grid_, kernel_table_, scratch_);

@@ -9,6 +9,8 @@
 // largest pressure error 2.5% and RMS error 1.5% of rho0 g H. The free-surface layer settles
 // about a third of a spacing higher than the initial lattice (dp / H = 5%, so ~1.5%), and the
 // weak compressibility changes the density by up to 0.5% (measured: 1.2% largest, 0.7% RMS).
+// The first wall layer under the floor (Adami extrapolation) carries rho0 g (H + dp/2) within
+// the same 2.5% on average (measured: 1.2%).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -63,6 +65,20 @@ TEST(HydrostaticTank, PressureFollowsDepthAndNoParticleCrossesTheWall) {
   RecordProperty("rms_relative_pressure_error", std::to_string(rms));
   std::printf("hydrostatic tank: max error %.4f, rms error %.4f of rho g H\n", worst, rms);
   EXPECT_LT(worst, 0.025);
+  double wall_pressure = 0.0;
+  int walls = 0;
+  for (std::size_t i = 0; i < store.size(); ++i) {
+    const Vec3& x = store.position()[i];
+    if (!store.is_fluid(i) && x.y() > -spacing && x.y() < 0.0 && x.x() > 0.2 && x.x() < 0.8) {
+      wall_pressure += pressure[i];
+      ++walls;
+    }
+  }
+  ASSERT_GT(walls, 10);
+  const double floor_exact = rho0 * g * (depth + 0.5 * spacing);
+  const double floor_error = std::abs(wall_pressure / walls - floor_exact) / floor_exact;
+  std::printf("hydrostatic tank: first wall layer pressure error %.4f\n", floor_error);
+  EXPECT_LT(floor_error, 0.025);
   EXPECT_LT(rms, 0.015);
 }
 
