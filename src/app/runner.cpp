@@ -50,13 +50,22 @@ Runner::Runner(const io::Case& the_case, Solver& solver, RunOptions options)
       options_(std::move(options)),
       analyses_(make_analyses(the_case)) {}
 
+// Removes what an earlier run left in the folder, so that no stale frame mixes in.
 void Runner::prepare_output_dir() const {
   namespace fs = std::filesystem;
   const fs::path& out = options_.output_dir;
+  std::error_code error;
   for (const char* product : {"frames", "plots", "series.csv", "run.json", "particles.pvd"}) {
-    fs::remove_all(out / product);
+    fs::remove_all(out / product, error);
+    if (error)
+      break;
   }
-  fs::create_directories(out / "frames");
+  if (!error)
+    fs::create_directories(out / "frames", error);
+  if (error) {
+    throw RunError(
+        fmt::format("cannot prepare the output folder {}: {}", out.string(), error.message()));
+  }
 }
 
 void Runner::sample(double time, std::size_t steps, double dt) {
@@ -70,6 +79,7 @@ void Runner::sample(double time, std::size_t steps, double dt) {
     a->sample(solver_.particles(), std::span<double>(row_).subspan(first));
   }
   series_->write_row(row_);
+  last_sample_time_ = time;
 }
 
 void Runner::write_frame(double time) {
@@ -108,6 +118,7 @@ io::RunSummary Runner::run() {
   const double tolerance = 1e-9 * time.end;
   double t = 0.0;
   std::size_t steps = 0;
+  double last_dt = 0.0;
   sample(t, steps, 0.0);
   if (case_.output.frames)
     write_frame(t);
@@ -121,6 +132,7 @@ io::RunSummary Runner::run() {
       break;
     }
     const double dt = std::min(solver_.stable_dt(), time.end - t);
+    last_dt = dt;
     if (!(dt > tolerance)) {
       summary.status = "failed";
       summary.message =
@@ -148,8 +160,11 @@ io::RunSummary Runner::run() {
     if (progress)
       progress->update(t, steps, particles);
   }
-  if (summary.status != "failed" && case_.output.frames && last_frame_time_ != t) {
-    write_frame(t);
+  if (summary.status != "failed") {
+    if (last_sample_time_ != t)
+      sample(t, steps, last_dt);
+    if (case_.output.frames && last_frame_time_ != t)
+      write_frame(t);
   }
   if (progress)
     progress->finish();

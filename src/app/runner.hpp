@@ -45,6 +45,7 @@ class Runner {
   std::vector<double> row_;
   std::size_t frames_written_ = 0;
   double last_frame_time_ = -1.0;
+  double last_sample_time_ = -1.0;
 };
 
 }  // namespace partimix::app

@@ -13,6 +13,23 @@
 namespace partimix::io {
 namespace {
 
+// Levenshtein distance, to tell a misspelt key from a missing one.
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j)
+    row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t substitution = diagonal + (a[i - 1] == b[j - 1] ? 0 : 1);
+      diagonal = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitution});
+    }
+  }
+  return row[b.size()];
+}
+
 std::string describe(const YAML::Node& node) {
   if (!node.IsDefined()) {
     return "nothing";
@@ -250,6 +267,15 @@ YAML::Node Reader::find(const std::string& key) {
 YAML::Node Reader::find_required(const std::string& key) {
   const YAML::Node node = find(key);
   if (!node.IsDefined()) {
+    const std::size_t near = key.size() <= 4 ? 1 : 2;
+    for (const auto& entry : node_) {
+      const std::string written = entry.first.Scalar();
+      const bool read = std::find(known_.begin(), known_.end(), written) != known_.end();
+      if (!read && edit_distance(written, key) <= near) {
+        throw error_at(entry.first, path_of(written),
+                       fmt::format("unknown key '{}'; did you mean '{}'?", written, key));
+      }
+    }
     throw error_at(node_, path_of(key), fmt::format("missing required key '{}'", key));
   }
   return node;

@@ -79,10 +79,9 @@ class Scratch {
   fs::path work() const { return root_ / "work"; }
   fs::path logs() const { return root_ / "logs"; }
 
-  // Writes `text` to work()/name and returns that path.
-  fs::path write(const std::string& name, const std::string& text) const {
+  // Writes `text` to work()/name.
+  void write(const std::string& name, const std::string& text) const {
     std::ofstream(work() / name, std::ios::binary) << text;
-    return work() / name;
   }
 
   // The names in work(), sorted.

@@ -1,0 +1,59 @@
+// `partimix check`, `--version`, `--help`, and a command line without a sub-command.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "cli_support.hpp"
+#include "dam_break_case.hpp"
+
+namespace partimix::cli_test {
+namespace {
+
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+
+TEST(CheckCommand, ValidCaseExitsZeroAndWritesNothing) {
+  const Scratch scratch;
+  scratch.write("case.yaml", kDamBreak3D);
+  const Outcome outcome = run_partimix(scratch, {"check", "case.yaml"});
+  EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_THAT(outcome.err, HasSubstr("case.yaml: valid ("));
+  EXPECT_THAT(scratch.work_entries(), ElementsAre("case.yaml"));
+}
+
+TEST(CheckCommand, BadSetExitsTwoAndWritesNothing) {
+  const Scratch scratch;
+  scratch.write("case.yaml", kDamBreak3D);
+  const Outcome outcome = run_partimix(scratch, {"check", "case.yaml", "--set", "sph.spacing=0"});
+  EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
+  EXPECT_THAT(outcome.err, HasSubstr("error: --set: sph.spacing: "));
+  EXPECT_THAT(scratch.work_entries(), ElementsAre("case.yaml"));
+}
+
+TEST(CommandLine, VersionPrintsTheVersion) {
+  const Scratch scratch;
+  const Outcome outcome = run_partimix(scratch, {"--version"});
+  EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_EQ(outcome.out, std::string("partimix ") + PARTIMIX_VERSION + "\n");
+}
+
+TEST(CommandLine, HelpListsTheSubCommands) {
+  const Scratch scratch;
+  const Outcome outcome = run_partimix(scratch, {"--help"});
+  EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
+  for (const char* command : {"run", "check", "plot"}) {
+    EXPECT_THAT(outcome.out, HasSubstr(command));
+  }
+}
+
+TEST(CommandLine, NoSubCommandIsBadInput) {
+  const Scratch scratch;
+  const Outcome outcome = run_partimix(scratch, {});
+  EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
+  EXPECT_THAT(outcome.err, HasSubstr("subcommand"));
+  EXPECT_TRUE(scratch.work_entries().empty());
+}
+
+}  // namespace
+}  // namespace partimix::cli_test
