@@ -31,7 +31,7 @@ double resolve_sound_speed(const Config& config, const ParticleStore& store,
   double max_velocity = config.max_velocity.value_or(0.0);
   if (!config.max_velocity) {
     const double height = fluid_height(store, hydrostatic_gravity, config.spacing);
-    max_velocity = std::sqrt(2.0 * hydrostatic_gravity.norm() * height);
+    max_velocity = 2.0 * std::sqrt(hydrostatic_gravity.norm() * height);
   }
   if (!(max_velocity > 0.0)) {
     throw std::invalid_argument(

@@ -1,8 +1,9 @@
 #pragma once
 // The numerical speed of sound c0 (docs/sph.md, "Equation of state"): given, or
-// mach_factor * U_max with U_max given or estimated as sqrt(2 |g| H) for fluid of height H
-// (the speed of a free fall from the top of the fluid), so that the Mach number stays <= 0.1
-// and density varies by about 1% (Monaghan 1994).
+// mach_factor * U_max with U_max given or estimated as 2 sqrt(|g| H) for fluid of height H
+// (the front speed of a dam break of depth H, Ritter 1892), so that the Mach number stays
+// <= 0.1 and density varies by about 1% (Monaghan 1994). With mach_factor 10 this is
+// c0 = 20 sqrt(g H), the DualSPHysics default.
 #include "particles/particle_store.hpp"
 #include "sph/config.hpp"
 

@@ -1,5 +1,6 @@
 #include "sph/wall_state.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 
@@ -27,7 +28,7 @@ void update_wall_state(Fields& f, std::size_t fluid_count, const CellGrid& grid,
     grid.for_each_neighbour(w, f.position, gather, fluid_count);
     if (weight > 0.0) {
       // Adami et al. (2012), eq. 27, for a wall at rest in the frame of gravity.
-      f.pressure[w] = (pressure + parameters.gravity.dot(density_moment)) / weight;
+      f.pressure[w] = std::max(0.0, (pressure + parameters.gravity.dot(density_moment)) / weight);
       f.density[w] = eos.density(f.pressure[w]);
       // Adami et al. (2012), eqs. 22-23.
       f.wall_velocity[w] = 2.0 * f.velocity[w] - velocity / weight;

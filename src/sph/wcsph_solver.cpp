@@ -5,6 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include <spdlog/spdlog.h>
+
 #include "sph/fluid_rates.hpp"
 #include "sph/shepard_filter.hpp"
 #include "sph/sound_speed.hpp"
@@ -202,6 +204,18 @@ void WcsphSolver::step(double dt) {
     sort_by_cell();
   }
   interact();
+  warn_once_if_too_fast();
+}
+
+// The Mach criterion c0 >= mach_factor * U_max (docs/sph.md) is checked as the run goes.
+void WcsphSolver::warn_once_if_too_fast() {
+  if (warned_about_speed_ || max_speed_ * config_.mach_factor <= parameters_.sound_speed)
+    return;
+  warned_about_speed_ = true;
+  spdlog::warn(
+      "the flow reached {:.3g} m/s, above c0 / mach_factor = {:.3g} m/s: density errors grow "
+      "beyond 1%; set sph.max_velocity (or sph.sound_speed) higher",
+      max_speed_, parameters_.sound_speed / config_.mach_factor);
 }
 
 }  // namespace partimix::sph

@@ -46,6 +46,7 @@ class WcsphSolver final : public Solver {
   void correct(double dt);
   void wrap_positions();
   void sort_by_cell();
+  void warn_once_if_too_fast();
 
   ParticleStore& store_;
   Domain domain_;
@@ -61,6 +62,7 @@ class WcsphSolver final : public Solver {
   double max_acceleration_ = 0.0;
   double max_speed_ = 0.0;
   std::size_t steps_ = 0;
+  bool warned_about_speed_ = false;
   std::size_t fluid_count_ = 0;  // fluid particles are [0, fluid_count_) of the store
   std::vector<std::uint32_t> sort_order_;
   std::vector<Vec3> start_position_;

@@ -31,18 +31,22 @@ void fill_block(Block& b, double dp, int n) {
   }
 }
 
+void filter(Fields& fields, const Domain& domain, double dp) {
+  const auto kernel = kernel_registry().create("wendland_c2");
+  const KernelTable table(*kernel, 1.5 * dp, 2);
+  CellGrid grid(domain, table.support_radius());
+  grid.build(fields.position);
+  std::vector<double> scratch;
+  apply_shepard_filter(fields, grid, table, scratch);
+}
+
 TEST(ShepardFilter, KeepsAUniformDensityExactlyUpToTheFreeSurface) {
   Block b;
   const double dp = 0.01;
   fill_block(b, dp, 20);
   Fields fields(b.store);
   std::fill(fields.density.begin(), fields.density.end(), 1000.0);
-  const auto kernel = kernel_registry().create("wendland_c2");
-  const KernelTable table(*kernel, 1.5 * dp, 2);
-  CellGrid grid(b.domain, table.support_radius());
-  grid.build(fields.position);
-  std::vector<double> scratch;
-  apply_shepard_filter(fields, grid, table, scratch);
+  filter(fields, b.domain, dp);
   for (double rho : fields.density)
     EXPECT_NEAR(rho, 1000.0, 1e-9);
 }
@@ -63,12 +67,7 @@ TEST(ShepardFilter, SmoothsNoiseTowardsTheMean) {
     return std::sqrt(s / static_cast<double>(fields.density.size()));
   };
   const double before = spread();
-  const auto kernel = kernel_registry().create("wendland_c2");
-  const KernelTable table(*kernel, 1.5 * dp, 2);
-  CellGrid grid(b.domain, table.support_radius());
-  grid.build(fields.position);
-  std::vector<double> scratch;
-  apply_shepard_filter(fields, grid, table, scratch);
+  filter(fields, b.domain, dp);
   // Averaging over about 28 neighbours with weights W: the spread falls several times.
   EXPECT_LT(spread(), 0.4 * before);
 }

@@ -21,7 +21,34 @@
 namespace partimix {
 namespace {
 
-TEST(HydrostaticTank, PressureFollowsDepthAndNoParticleCrossesTheWall) {
+// The options that change the static state: density treatment, equation of state and kernels.
+// `consistency` is added to every tolerance: the deficit |1 - M| of the lattice first moment
+// M = sum_j V_j (x_j - x_i) (x) grad W_ij of the gradient kernel at h = 1.5 dp (docs/sph.md,
+// "Choice of h"), by which the settled pressure gradient is steeper than rho0 g. Molteni
+// diffusion is not here: it diffuses the hydrostatic density gradient at the free surface and
+// walls (5% error measured), which tests/sph/density_diffusion_test.cpp shows directly.
+struct Variant {
+  const char* name;
+  void (*apply)(sph::Config&);
+  double consistency;
+};
+
+const Variant kVariants[] = {
+    {"fourtakas_tait_wendland", [](sph::Config&) {}, 0.0026},
+    {"shepard_every_20",
+     [](sph::Config& c) {
+       c.density.diffusion = "none";
+       c.density.shepard = true;
+     },
+     0.0026},
+    {"linear_eos", [](sph::Config& c) { c.equation_of_state = "linear"; }, 0.0026},
+    {"cubic_spline", [](sph::Config& c) { c.kernel = "cubic_spline"; }, 0.0067},
+    {"hyperbolic_gradient", [](sph::Config& c) { c.gradient_kernel = "hyperbolic"; }, 0.0167},
+};
+
+class HydrostaticTank : public ::testing::TestWithParam<Variant> {};
+
+TEST_P(HydrostaticTank, PressureFollowsDepthAndNoParticleCrossesTheWall) {
   const double width = 1.0;
   const double depth = 0.5;
   const double g = 9.81;
@@ -29,6 +56,7 @@ TEST(HydrostaticTank, PressureFollowsDepthAndNoParticleCrossesTheWall) {
   const double spacing = 0.025;
   io::Case c = testing_cases::tank_2d(width, depth, spacing);
   c.fluid.viscosity = 50.0;
+  GetParam().apply(c.sph);
   app::Simulation sim = app::build_simulation(c);
 
   double t = 0.0;
@@ -64,7 +92,8 @@ TEST(HydrostaticTank, PressureFollowsDepthAndNoParticleCrossesTheWall) {
   RecordProperty("max_relative_pressure_error", std::to_string(worst));
   RecordProperty("rms_relative_pressure_error", std::to_string(rms));
   std::printf("hydrostatic tank: max error %.4f, rms error %.4f of rho g H\n", worst, rms);
-  EXPECT_LT(worst, 0.025);
+  const double consistency = GetParam().consistency;
+  EXPECT_LT(worst, 0.025 + consistency);
   double wall_pressure = 0.0;
   int walls = 0;
   for (std::size_t i = 0; i < store.size(); ++i) {
@@ -78,9 +107,12 @@ TEST(HydrostaticTank, PressureFollowsDepthAndNoParticleCrossesTheWall) {
   const double floor_exact = rho0 * g * (depth + 0.5 * spacing);
   const double floor_error = std::abs(wall_pressure / walls - floor_exact) / floor_exact;
   std::printf("hydrostatic tank: first wall layer pressure error %.4f\n", floor_error);
-  EXPECT_LT(floor_error, 0.025);
-  EXPECT_LT(rms, 0.015);
+  EXPECT_LT(floor_error, 0.025 + consistency);
+  EXPECT_LT(rms, 0.015 + consistency);
 }
+
+INSTANTIATE_TEST_SUITE_P(Options, HydrostaticTank, ::testing::ValuesIn(kVariants),
+                         [](const auto& variant) { return std::string(variant.param.name); });
 
 }  // namespace
 }  // namespace partimix
