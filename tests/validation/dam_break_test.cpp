@@ -15,7 +15,7 @@
 // by 10-20% over this range: the gate takes a finite time to clear the column and the thin tip
 // feels floor friction and surface tension that the simulation does not have, so published
 // WCSPH and VOF fronts run ahead of both data sets (docs/validation.md gives the deviations we
-// measure, +13% against Martin and Moyce and up to +22% against Koshizuka and Oka).
+// measure, +13% to +17% against Martin and Moyce and up to +22% against Koshizuka and Oka).
 #include <gtest/gtest.h>
 
 #include <cmath>
