@@ -10,7 +10,7 @@
 #include <sys/resource.h>
 
 #include <algorithm>
-#include <cstddef>
+#include <cstdint>
 #include <string>
 
 #include "app/simulation.hpp"

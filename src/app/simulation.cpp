@@ -1,7 +1,8 @@
 #include "app/simulation.hpp"
 
 #include <cmath>
-#include <stdexcept>
+
+#include <fmt/format.h>
 
 #include "core/error.hpp"
 #include "geometry/lattice.hpp"
@@ -29,11 +30,10 @@ void check_inside_domain(const io::Case& the_case, const ParticleStore& store) {
   for (std::size_t i = 0; i < store.size(); ++i) {
     if (!the_case.domain.contains(store.position()[i])) {
       const Vec3& x = store.position()[i];
-      const std::string what = store.is_fluid(i) ? "fluid" : "wall";
       throw case_error(the_case, "domain",
-                       "a " + what + " particle at (" + std::to_string(x.x()) + ", " +
-                           std::to_string(x.y()) + ", " + std::to_string(x.z()) +
-                           ") lies outside the domain; enlarge domain.min/max");
+                       fmt::format("a {} particle at ({:.6g}, {:.6g}, {:.6g}) lies outside the "
+                                   "domain; enlarge domain.min/max",
+                                   store.is_fluid(i) ? "fluid" : "wall", x.x(), x.y(), x.z()));
     }
   }
 }
@@ -46,8 +46,7 @@ int wall_layers_for(const sph::Config& config) {
   return static_cast<int>(std::ceil(support * config.smoothing_ratio - 1e-9));
 }
 
-}  // namespace
-
+// Fills `store` with the fluid regions and wall layers of the case (ids in creation order).
 void generate_particles(const io::Case& the_case, int wall_layers, ParticleStore& store) {
   const double spacing = the_case.sph.spacing;
   for (const auto& region : the_case.fluid.regions) {
@@ -61,6 +60,8 @@ void generate_particles(const io::Case& the_case, int wall_layers, ParticleStore
   }
 }
 
+}  // namespace
+
 Simulation build_simulation(const io::Case& the_case) {
   Simulation simulation;
   simulation.store = std::make_unique<ParticleStore>();
@@ -73,8 +74,8 @@ Simulation build_simulation(const io::Case& the_case) {
     simulation.solver = std::make_unique<sph::WcsphSolver>(
         *simulation.store, the_case.domain, the_case.sph,
         sph::FluidProperties{the_case.fluid.density, the_case.fluid.viscosity}, the_case.gravity);
-  } catch (const std::invalid_argument& error) {
-    throw case_error(the_case, "sph", error.what());
+  } catch (const InputError& error) {
+    throw case_error(the_case, error.location().key_path, error.message());
   }
   return simulation;
 }

@@ -18,7 +18,4 @@ struct Simulation {
 // fall outside the domain or a periodic axis too short for the kernel.
 Simulation build_simulation(const io::Case& the_case);
 
-// Fills `store` with the fluid regions and wall layers of the case (ids in creation order).
-void generate_particles(const io::Case& the_case, int wall_layers, ParticleStore& store);
-
 }  // namespace partimix::app

@@ -1,9 +1,10 @@
 #include "sph/sound_speed.hpp"
 
+#include "core/error.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
 
 namespace partimix::sph {
 
@@ -34,9 +35,9 @@ double resolve_sound_speed(const Config& config, const ParticleStore& store,
     max_velocity = 2.0 * std::sqrt(hydrostatic_gravity.norm() * height);
   }
   if (!(max_velocity > 0.0)) {
-    throw std::invalid_argument(
-        "sph.max_velocity: cannot estimate the flow speed without gravity across the fluid; "
-        "give sph.max_velocity or sph.sound_speed");
+    throw InputError(InputLocation{"", 0, 0, "sph.max_velocity"},
+                     "cannot estimate the flow speed without gravity across the fluid; give "
+                     "sph.max_velocity or sph.sound_speed");
   }
   return config.mach_factor * max_velocity;
 }

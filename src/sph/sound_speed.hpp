@@ -13,7 +13,7 @@ namespace partimix::sph {
 // spacing (each particle stands for a cell of size dp). 0 when gravity is zero.
 double fluid_height(const ParticleStore& store, const Vec3& gravity, double spacing);
 
-// Throws std::invalid_argument naming sph.max_velocity when no estimate is possible.
+// Throws InputError naming sph.max_velocity when no estimate is possible.
 double resolve_sound_speed(const Config& config, const ParticleStore& store,
                            const Vec3& hydrostatic_gravity);
 

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
 
 #include <spdlog/spdlog.h>
 
+#include "core/error.hpp"
 #include "sph/fluid_rates.hpp"
 #include "sph/shepard_filter.hpp"
 #include "sph/sound_speed.hpp"
@@ -18,7 +18,7 @@ namespace {
 std::unique_ptr<Kernel> make_kernel(const std::string& name, const std::string& key) {
   auto kernel = kernel_registry().create(name);
   if (!kernel)
-    throw std::invalid_argument(key + ": unknown kernel '" + name + "'");
+    throw InputError(InputLocation{"", 0, 0, key}, "unknown kernel '" + name + "'");
   return kernel;
 }
 
@@ -29,7 +29,8 @@ DensityDiffusion diffusion_from(const std::string& name) {
     return DensityDiffusion::molteni;
   if (name == "fourtakas")
     return DensityDiffusion::fourtakas;
-  throw std::invalid_argument("sph.density.diffusion: unknown model '" + name + "'");
+  throw InputError(InputLocation{"", 0, 0, "sph.density.diffusion"},
+                   "unknown model '" + name + "'");
 }
 
 Vec3 without_periodic_axes(const Vec3& gravity, const Domain& domain) {
@@ -80,8 +81,8 @@ WcsphSolver::WcsphSolver(ParticleStore& store, const Domain& domain, const Confi
       gradient_table_(*gradient_kernel_, parameters_.h, domain.dimensions),
       grid_(domain, std::max(kernel_table_.support_radius(), gradient_table_.support_radius())) {
   if (!eos_) {
-    throw std::invalid_argument("sph.equation_of_state: unknown '" + config.equation_of_state +
-                                "'");
+    throw InputError(InputLocation{"", 0, 0, "sph.equation_of_state"},
+                     "unknown equation of state '" + config.equation_of_state + "'");
   }
   initialise_fluid();
   fluid_count_ = static_cast<std::size_t>(std::count_if(

@@ -25,7 +25,7 @@ struct FluidProperties {
 class WcsphSolver final : public Solver {
  public:
   // `store` holds fluid and wall particles with kind and position set. The solver sets masses
-  // (rho0 dp^d), hydrostatic initial densities and its own fields. Throws std::invalid_argument
+  // (rho0 dp^d), hydrostatic initial densities and its own fields. Throws InputError
   // naming the case key when the configuration cannot be used (e.g. no way to set c0).
   WcsphSolver(ParticleStore& store, const Domain& domain, const Config& config,
               const FluidProperties& fluid, const Vec3& gravity);
