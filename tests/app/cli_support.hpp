@@ -22,6 +22,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/temp_dir.hpp"
+
 namespace partimix::cli_test {
 
 namespace fs = std::filesystem;
@@ -30,10 +32,7 @@ using Clock = std::chrono::steady_clock;
 // Long enough for any run of these tests, short enough that a hung program fails the test.
 inline constexpr std::chrono::seconds kTimeLimit{60};
 
-inline std::string read_text(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using test_support::read_file;
 
 // `text` with the first `from` replaced by `to`; a test failure when `from` is not in it.
 inline std::string replaced(std::string text, const std::string& from, const std::string& to) {
@@ -61,20 +60,10 @@ inline int line_of(const std::string& text, const std::string& needle) {
 // that must write nothing leaves work() as it was.
 class Scratch {
  public:
-  Scratch() {
-    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    root_ = fs::temp_directory_path() / (std::string("partimix_app_") + test->test_suite_name() +
-                                         "_" + test->name() + "_" + std::to_string(::getpid()));
-    fs::remove_all(root_);
+  Scratch() : root_("partimix_app") {
     fs::create_directories(work());
     fs::create_directories(logs());
   }
-  ~Scratch() {
-    std::error_code ignored;
-    fs::remove_all(root_, ignored);
-  }
-  Scratch(const Scratch&) = delete;
-  Scratch& operator=(const Scratch&) = delete;
 
   fs::path work() const { return root_ / "work"; }
   fs::path logs() const { return root_ / "logs"; }
@@ -94,7 +83,7 @@ class Scratch {
   }
 
  private:
-  fs::path root_;
+  test_support::TempDir root_;
 };
 
 struct Outcome {
@@ -153,8 +142,8 @@ class Child {
     }
     pid_ = -1;
     outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    outcome.out = read_text(out_file_);
-    outcome.err = read_text(err_file_);
+    outcome.out = read_file(out_file_);
+    outcome.err = read_file(err_file_);
     return outcome;
   }
 
@@ -219,7 +208,7 @@ struct FrameEntry {
 // The DataSet entries of a .pvd collection, in file order.
 inline std::vector<FrameEntry> read_pvd(const fs::path& file) {
   static const std::regex data_set(R"re(<DataSet timestep="([^"]*)"[^>]*file="([^"]*)")re");
-  const std::string text = read_text(file);
+  const std::string text = read_file(file);
   std::vector<FrameEntry> entries;
   for (auto it = std::sregex_iterator(text.begin(), text.end(), data_set);
        it != std::sregex_iterator(); ++it) {
@@ -245,7 +234,7 @@ inline std::vector<std::string> files_of(const std::vector<FrameEntry>& entries)
 }
 
 inline nlohmann::json read_json(const fs::path& file) {
-  return nlohmann::json::parse(read_text(file));
+  return nlohmann::json::parse(read_file(file));
 }
 
 }  // namespace partimix::cli_test

@@ -72,7 +72,7 @@ TEST_F(RunCommand, FramesHoldEveryParticleAndTheOutputFields) {
   const nlohmann::json run = read_json(out() / "run.json").at("run");
   const std::string points = "NumberOfPoints=\"" + run.at("particles").dump() + "\"";
   for (const auto& frame : read_pvd(out() / "particles.pvd")) {
-    const std::string text = read_text(out() / frame.file);
+    const std::string text = read_file(out() / frame.file);
     EXPECT_THAT(text, StartsWith("<?xml")) << frame.file;
     EXPECT_THAT(text, HasSubstr(points)) << frame.file;
     for (const char* field : {"velocity", "density", "pressure", "id", "kind"}) {
@@ -117,7 +117,7 @@ TEST_F(PlotCommand, WritesTheOverviewPng) {
   ASSERT_EQ(plot.exit_code, 0) << plot.out << plot.err;
   const fs::path overview = out() / "plots" / "overview.png";
   ASSERT_TRUE(fs::exists(overview));
-  EXPECT_THAT(read_text(overview), StartsWith("\x89PNG"));
+  EXPECT_THAT(read_file(overview), StartsWith("\x89PNG"));
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 
 #include "core/error.hpp"
 #include "io/case.hpp"
+#include "support/temp_dir.hpp"
 
 namespace partimix::case_test {
 
@@ -79,25 +80,14 @@ inline std::string remove_line(const std::string& text, std::size_t number) {
 // process), removed with the object.
 class CaseFile {
  public:
-  explicit CaseFile(const std::string& text) {
-    const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    folder_ = std::filesystem::temp_directory_path() /
-              (std::string("partimix_case_") + test->test_suite_name() + "_" + test->name() + "_" +
-               std::to_string(::getpid()));
-    std::filesystem::create_directories(folder_);
+  explicit CaseFile(const std::string& text) : folder_("partimix_case") {
     std::ofstream(folder_ / "case.yaml") << text;
   }
-  ~CaseFile() {
-    std::error_code ignored;
-    std::filesystem::remove_all(folder_, ignored);
-  }
-  CaseFile(const CaseFile&) = delete;
-  CaseFile& operator=(const CaseFile&) = delete;
 
   std::string path() const { return (folder_ / "case.yaml").string(); }
 
  private:
-  std::filesystem::path folder_;
+  test_support::TempDir folder_;
 };
 
 inline io::Case load_text(const std::string& text, const std::vector<std::string>& overrides = {}) {
