@@ -30,6 +30,7 @@ class CellGrid {
 
   // Calls fn(j, r_ij, r2) for every particle j < below (i itself included) with
   // r2 = |r_ij|^2 < radius^2, where r_ij = x_i - x_j through the nearest periodic image.
+  // Particles at or past `below` are skipped without reading their positions.
   template <class Fn>
   void for_each_neighbour(std::size_t i, std::span<const Vec3> positions, Fn&& fn,
                           std::size_t below = std::numeric_limits<std::size_t>::max()) const;
