@@ -73,7 +73,7 @@ Simulation build_simulation(const io::Case& the_case) {
   try {
     simulation.solver = std::make_unique<sph::WcsphSolver>(
         *simulation.store, the_case.domain, the_case.sph,
-        sph::FluidProperties{the_case.fluid.density, the_case.fluid.viscosity}, the_case.gravity);
+        sph::FluidProperties{the_case.fluid.density, the_case.fluid.rheology}, the_case.gravity);
   } catch (const InputError& error) {
     throw case_error(the_case, error.location().key_path, error.message());
   }

@@ -12,6 +12,7 @@
 #include "geometry/shape.hpp"
 #include "particles/domain.hpp"
 #include "sph/config.hpp"
+#include "sph/rheology.hpp"
 
 namespace partimix::io {
 
@@ -26,8 +27,9 @@ struct FluidRegion {
 };
 
 struct FluidSpec {
-  double density = 1000.0;  // rho0 [kg/m^3]
-  double viscosity = 0.0;   // mu [Pa s]
+  double density = 1000.0;       // rho0 [kg/m^3]
+  double viscosity = 0.0;        // mu [Pa s] of a newtonian rheology; 0 for the other models
+  sph::RheologyConfig rheology;  // from `viscosity` (newtonian) or the `rheology` map
   std::vector<FluidRegion> regions;
 };
 

@@ -7,6 +7,7 @@
 
 #include "io/case.hpp"
 #include "io/overrides.hpp"
+#include "io/rheology_section.hpp"
 #include "io/yaml_reader.hpp"
 
 namespace partimix::io {
@@ -167,7 +168,8 @@ FluidSpec read_fluid(Reader& root, int dimensions) {
   Reader section = root.map("fluid");
   FluidSpec fluid;
   fluid.density = section.required<double>("density", kPositive);
-  fluid.viscosity = section.required<double>("viscosity", kNonNegative);
+  fluid.rheology = read_fluid_rheology(section);
+  fluid.viscosity = fluid.rheology.model == "newtonian" ? fluid.rheology.viscosity : 0.0;
   for (Reader& region : section.list("regions")) {
     fluid.regions.push_back({read_shape(region, dimensions)});
     region.done();

@@ -210,6 +210,10 @@ Vec3 Reader::vector(const std::string& key, int dimensions, const Vec3& fallback
   return value;
 }
 
+bool Reader::contains(const std::string& key) const {
+  return std::as_const(node_)[key].IsDefined();
+}
+
 Reader Reader::map(const std::string& key) {
   const YAML::Node node = find_required(key);
   if (!node.IsMap()) {

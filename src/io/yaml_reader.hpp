@@ -68,6 +68,9 @@ class Reader {
   Vec3 vector(const std::string& key, int dimensions);
   Vec3 vector(const std::string& key, int dimensions, const Vec3& fallback);
 
+  // Whether this map holds `key`, with any value; asking does not count as reading the key.
+  bool contains(const std::string& key) const;
+
   Reader map(const std::string& key);
   Reader optional_map(const std::string& key);  // absent: an empty map, so defaults are recorded
   std::vector<Reader> list(const std::string& key);           // a non-empty list of maps

@@ -17,7 +17,9 @@ struct Fields {
         pressure(store.add_scalar("pressure", "Pa").values),
         density_rate(store.add_scalar("density_rate", "kg/(m^3 s)", false).values),
         acceleration(store.add_vector("acceleration", "m/s^2", false).values),
-        wall_velocity(store.add_vector("wall_velocity", "m/s", false).values) {}
+        wall_velocity(store.add_vector("wall_velocity", "m/s", false).values),
+        viscosity(store.add_scalar("viscosity", "Pa s").values),
+        shear_rate(store.add_scalar("shear_rate", "1/s").values) {}
 
   std::vector<std::int32_t>& kind;
   std::vector<Vec3>& position;
@@ -28,6 +30,8 @@ struct Fields {
   std::vector<double>& density_rate;
   std::vector<Vec3>& acceleration;
   std::vector<Vec3>& wall_velocity;  // wall particles: the no-slip ghost velocity (Adami 2012)
+  std::vector<double>& viscosity;    // apparent viscosity eta_a of fluid particles
+  std::vector<double>& shear_rate;   // gamma_dot of fluid particles
 };
 
 inline bool is_fluid(std::int32_t kind) {

@@ -18,7 +18,7 @@ Rates rates_of(std::size_t i, const Fields& f, const CellGrid& grid, const Kerne
   const double rho_i = f.density[i];
   const double p_over_rho2_i = f.pressure[i] / (rho_i * rho_i);
   const Vec3& v_i = f.velocity[i];
-  const double two_mu = 2.0 * p.viscosity;
+  const double eta_i = f.viscosity[i];
   const double diffusion_factor = 2.0 * p.delta * p.h * p.sound_speed;
   const double inverse_c2 = 1.0 / (p.sound_speed * p.sound_speed);
   Rates sum;
@@ -36,8 +36,10 @@ Rates rates_of(std::size_t i, const Fields& f, const CellGrid& grid, const Kerne
     sum.acceleration -= (m_j * (p_over_rho2_i + f.pressure[j] / (rho_j * rho_j))) * grad;
     const Vec3 v_ij_viscous = fluid_j ? v_ij : Vec3(v_i - f.wall_velocity[j]);
     if (p.laminar_viscosity) {
+      // Morris et al. (1997), eq. 8 with eta_i + eta_j; a wall takes the viscosity of i.
+      const double eta_sum = eta_i + (fluid_j ? f.viscosity[j] : eta_i);
       sum.acceleration +=
-          (m_j * two_mu * r_dot_grad / (rho_i * rho_j * (r2 + p.eta2))) * v_ij_viscous;
+          (m_j * eta_sum * r_dot_grad / (rho_i * rho_j * (r2 + p.eta2))) * v_ij_viscous;
     }
     const double approach = v_ij_viscous.dot(r_ij);
     if (p.artificial_viscosity > 0.0 && approach < 0.0) {

@@ -13,7 +13,6 @@ struct Parameters {
   double h = 0.0;                           // smoothing length [m]
   double eta2 = 0.0;                        // 0.01 h^2, keeps 1 / r^2 terms finite (seed, eq. 17)
   double reference_density = 0.0;           // rho0 [kg/m^3]
-  double viscosity = 0.0;                   // mu [Pa s]
   double sound_speed = 0.0;                 // c0 [m/s]
   Vec3 gravity = Vec3::Zero();              // body acceleration [m/s^2]
   Vec3 hydrostatic_gravity = Vec3::Zero();  // gravity without its periodic-axis components

@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "sph/fluid_rates.hpp"
+#include "sph/shear_rate.hpp"
 #include "sph/shepard_filter.hpp"
 #include "sph/sound_speed.hpp"
 #include "sph/wall_state.hpp"
@@ -50,7 +51,6 @@ Parameters make_parameters(const Config& config, const FluidProperties& fluid, c
   p.h = config.smoothing_length();
   p.eta2 = 0.01 * p.h * p.h;
   p.reference_density = fluid.density;
-  p.viscosity = fluid.viscosity;
   p.gravity = gravity;
   p.hydrostatic_gravity = without_periodic_axes(gravity, domain);
   p.sound_speed = resolve_sound_speed(config, store, p.hydrostatic_gravity);
@@ -79,7 +79,9 @@ WcsphSolver::WcsphSolver(ParticleStore& store, const Domain& domain, const Confi
           EosParameters{fluid.density, parameters_.sound_speed, config.tait_gamma})),
       kernel_table_(*kernel_, parameters_.h, domain.dimensions),
       gradient_table_(*gradient_kernel_, parameters_.h, domain.dimensions),
-      grid_(domain, std::max(kernel_table_.support_radius(), gradient_table_.support_radius())) {
+      grid_(domain, std::max(kernel_table_.support_radius(), gradient_table_.support_radius())),
+      rheology_(fluid.rheology),
+      newtonian_(fluid.rheology.model == "newtonian") {
   if (!eos_) {
     throw InputError(InputLocation{"", 0, 0, "sph.equation_of_state"},
                      "unknown equation of state '" + config.equation_of_state + "'");
@@ -137,17 +139,33 @@ void WcsphSolver::interact() {
     fields_.pressure[i] = eos_->pressure(fields_.density[i]);
   }
   update_wall_state(fields_, fluid_count_, grid_, kernel_table_, *eos_, parameters_);
+  update_viscosity();
   const RateExtremes extremes =
       compute_fluid_rates(fields_, fluid_count_, grid_, gradient_table_, parameters_);
   max_acceleration_ = extremes.max_acceleration;
   max_speed_ = extremes.max_speed;
 }
 
+// Apparent viscosity of each fluid particle from its shear rate (docs/rheology.md); a
+// Newtonian fluid skips the shear rates.
+void WcsphSolver::update_viscosity() {
+  if (!newtonian_) {
+    compute_shear_rates(fields_, fluid_count_, grid_, gradient_table_, domain_.dimensions,
+                        config_.corrected_velocity_gradient);
+  }
+  double largest = 0.0;
+  for (std::size_t i = 0; i < fluid_count_; ++i) {
+    fields_.viscosity[i] = rheology_.viscosity(fields_.shear_rate[i]);
+    largest = std::max(largest, fields_.viscosity[i]);
+  }
+  max_viscosity_ = largest;
+}
+
 double WcsphSolver::stable_dt() const {
   const TimeStepFactors& factors = config_.time_step;
   const double h = parameters_.h;
   double dt = factors.cfl * h / (parameters_.sound_speed + max_speed_);
-  const double nu = parameters_.viscosity / parameters_.reference_density;
+  const double nu = max_viscosity_ / parameters_.reference_density;
   if (parameters_.laminar_viscosity && nu > 0.0) {
     dt = std::min(dt, factors.viscous * h * h / nu);
   }

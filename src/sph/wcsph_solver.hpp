@@ -14,12 +14,13 @@
 #include "sph/kernel.hpp"
 #include "sph/kernel_table.hpp"
 #include "sph/parameters.hpp"
+#include "sph/rheology.hpp"
 
 namespace partimix::sph {
 
 struct FluidProperties {
   double density = 1000.0;  // rho0 [kg/m^3]
-  double viscosity = 0.0;   // mu [Pa s]
+  RheologyConfig rheology;  // apparent viscosity model
 };
 
 class WcsphSolver final : public Solver {
@@ -47,6 +48,7 @@ class WcsphSolver final : public Solver {
   void wrap_positions();
   void sort_by_cell();
   void warn_once_if_too_fast();
+  void update_viscosity();
 
   ParticleStore& store_;
   Domain domain_;
@@ -63,6 +65,9 @@ class WcsphSolver final : public Solver {
   double max_speed_ = 0.0;
   std::size_t steps_ = 0;
   bool warned_about_speed_ = false;
+  BoundedRheology rheology_;
+  bool newtonian_ = true;
+  double max_viscosity_ = 0.0;   // largest apparent viscosity of the fluid now [Pa s]
   std::size_t fluid_count_ = 0;  // fluid particles are [0, fluid_count_) of the store
   std::vector<std::uint32_t> sort_order_;
   std::vector<Vec3> start_position_;

@@ -20,7 +20,7 @@ inline io::Case tank_2d(double width, double depth, double spacing) {
   c.gravity = Vec3(0.0, -9.81, 0.0);
   c.sph.spacing = spacing;
   c.fluid.density = 1000.0;
-  c.fluid.viscosity = 1.0e-3;
+  c.fluid.rheology.viscosity = 1.0e-3;
   c.fluid.regions.push_back(
       {std::make_shared<geometry::Box>(Vec3(0.0, 0.0, -1.0), Vec3(width, depth, 1.0))});
   c.walls.push_back(
@@ -48,7 +48,7 @@ inline io::Case poiseuille_2d(double width, double length, double spacing, doubl
   c.sph.spacing = spacing;
   c.sph.max_velocity = max_velocity;
   c.fluid.density = density;
-  c.fluid.viscosity = viscosity;
+  c.fluid.rheology.viscosity = viscosity;
   const auto channel =
       std::make_shared<geometry::Box>(Vec3(0.0, 0.0, -1.0), Vec3(length, width, 1.0));
   c.fluid.regions.push_back({channel});
@@ -73,7 +73,7 @@ inline io::Case dam_break_2d(double column, double spacing) {
   c.gravity = Vec3(0.0, -9.81, 0.0);
   c.sph.spacing = spacing;
   c.fluid.density = 1000.0;
-  c.fluid.viscosity = 1.0e-3;
+  c.fluid.rheology.viscosity = 1.0e-3;
   c.fluid.regions.push_back(
       {std::make_shared<geometry::Box>(Vec3(0.0, 0.0, -1.0), Vec3(column, 2.0 * column, 1.0))});
   c.walls.push_back(

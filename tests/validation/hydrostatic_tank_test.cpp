@@ -55,7 +55,7 @@ TEST_P(HydrostaticTank, PressureFollowsDepthAndNoParticleCrossesTheWall) {
   const double rho0 = 1000.0;
   const double spacing = 0.025;
   io::Case c = testing_cases::tank_2d(width, depth, spacing);
-  c.fluid.viscosity = 50.0;
+  c.fluid.rheology.viscosity = 50.0;
   GetParam().apply(c.sph);
   app::Simulation sim = app::build_simulation(c);
 

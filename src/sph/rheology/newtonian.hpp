@@ -1,0 +1,16 @@
+#pragma once
+// Newtonian fluid: eta = mu, whatever the shear rate (docs/rheology.md, "Newtonian").
+#include "sph/rheology.hpp"
+
+namespace partimix::sph {
+
+class Newtonian final : public Rheology {
+ public:
+  explicit Newtonian(double viscosity);
+  double apparent_viscosity(double shear_rate) const override;
+
+ private:
+  double viscosity_;
+};
+
+}  // namespace partimix::sph
