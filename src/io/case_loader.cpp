@@ -128,6 +128,8 @@ sph::Config read_sph(Reader& root) {
   config.artificial_viscosity =
       section.optional<double>("artificial_viscosity", config.artificial_viscosity, kNonNegative);
   config.laminar_viscosity = section.optional<bool>("laminar_viscosity", config.laminar_viscosity);
+  config.corrected_velocity_gradient =
+      section.choice("velocity_gradient", "corrected", {"corrected", "plain"}) == "corrected";
   config.density = read_density(section);
   config.wall_layers = section.automatic<int>("wall_layers", at_least(1));
   config.time_step = read_time_step(section);
