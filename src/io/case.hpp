@@ -28,7 +28,6 @@ struct FluidRegion {
 
 struct FluidSpec {
   double density = 1000.0;       // rho0 [kg/m^3]
-  double viscosity = 0.0;        // mu [Pa s] of a newtonian rheology; 0 for the other models
   sph::RheologyConfig rheology;  // from `viscosity` (newtonian) or the `rheology` map
   std::vector<FluidRegion> regions;
 };

@@ -171,7 +171,6 @@ FluidSpec read_fluid(Reader& root, int dimensions) {
   FluidSpec fluid;
   fluid.density = section.required<double>("density", kPositive);
   fluid.rheology = read_fluid_rheology(section);
-  fluid.viscosity = fluid.rheology.model == "newtonian" ? fluid.rheology.viscosity : 0.0;
   for (Reader& region : section.list("regions")) {
     fluid.regions.push_back({read_shape(region, dimensions)});
     region.done();

@@ -106,7 +106,7 @@ TEST(CaseLoader, Full2DCaseHasTheValuesWritten) {
   EXPECT_DOUBLE_EQ(loaded.time.output_interval, 0.02);
   EXPECT_DOUBLE_EQ(loaded.time.sample_interval, 0.005);
   EXPECT_DOUBLE_EQ(loaded.fluid.density, 998.2);
-  EXPECT_DOUBLE_EQ(loaded.fluid.viscosity, 1.0e-3);
+  EXPECT_DOUBLE_EQ(loaded.fluid.rheology.viscosity, 1.0e-3);
   EXPECT_FALSE(loaded.output.frames);
   ASSERT_EQ(loaded.analyses.size(), 1u);
   EXPECT_EQ(loaded.analyses[0].type, "front_position");

@@ -43,7 +43,7 @@ TEST(CaseRheology, ViscosityKeyLoadsAsNewtonian) {
   const io::Case loaded = load_text(kMinimal2D);
   EXPECT_EQ(loaded.fluid.rheology.model, "newtonian");
   EXPECT_DOUBLE_EQ(loaded.fluid.rheology.viscosity, 1.0e-3);
-  EXPECT_DOUBLE_EQ(loaded.fluid.viscosity, 1.0e-3);
+  EXPECT_DOUBLE_EQ(loaded.fluid.rheology.viscosity, 1.0e-3);
   EXPECT_EQ(loaded.fluid.rheology.viscosity_max, std::numeric_limits<double>::infinity());
   EXPECT_EQ(loaded.resolved["fluid"]["viscosity"], 1.0e-3);
   EXPECT_FALSE(loaded.resolved["fluid"].contains("rheology"));
@@ -53,7 +53,7 @@ TEST(CaseRheology, NewtonianMapLoads) {
   const io::Case loaded = load_text(with_rheology({"model: newtonian", "viscosity: 0.5"}));
   EXPECT_EQ(loaded.fluid.rheology.model, "newtonian");
   EXPECT_DOUBLE_EQ(loaded.fluid.rheology.viscosity, 0.5);
-  EXPECT_DOUBLE_EQ(loaded.fluid.viscosity, 0.5);
+  EXPECT_DOUBLE_EQ(loaded.fluid.rheology.viscosity, 0.5);
 }
 
 TEST(CaseRheology, PowerLawLoads) {
@@ -65,7 +65,7 @@ TEST(CaseRheology, PowerLawLoads) {
   EXPECT_DOUBLE_EQ(c.flow_index, 0.47);
   EXPECT_DOUBLE_EQ(c.viscosity_min, 0.0);
   EXPECT_DOUBLE_EQ(c.viscosity_max, 1.0e4);
-  EXPECT_DOUBLE_EQ(loaded.fluid.viscosity, 0.0);
+  EXPECT_DOUBLE_EQ(loaded.fluid.rheology.viscosity, 0.0);
 }
 
 TEST(CaseRheology, HerschelBulkleyLoadsWithPapanastasiouByDefault) {
