@@ -149,6 +149,8 @@ void WcsphSolver::interact() {
 // Apparent viscosity of each fluid particle from its shear rate (docs/rheology.md); a
 // Newtonian fluid skips the shear rates.
 void WcsphSolver::update_viscosity() {
+  if (newtonian_ && steps_ > 0)
+    return;  // constant, filled during the first step
   if (!newtonian_) {
     compute_shear_rates(fields_, fluid_count_, grid_, gradient_table_, domain_.dimensions,
                         config_.corrected_velocity_gradient);
