@@ -128,6 +128,10 @@ sph::Config read_sph(Reader& root) {
   config.artificial_viscosity =
       section.optional<double>("artificial_viscosity", config.artificial_viscosity, kNonNegative);
   config.laminar_viscosity = section.optional<bool>("laminar_viscosity", config.laminar_viscosity);
+  config.viscous_operator =
+      section.choice("viscous_operator", config.viscous_operator, {"auto", "morris", "stress"});
+  config.viscosity_mean =
+      section.choice("viscosity_mean", config.viscosity_mean, {"arithmetic", "harmonic"});
   config.corrected_velocity_gradient =
       section.choice("velocity_gradient", "corrected", {"corrected", "plain"}) == "corrected";
   config.density = read_density(section);

@@ -29,9 +29,11 @@ struct Config {
   std::optional<double> sound_speed;   // c0 [m/s]; when absent, mach_factor * max_velocity
   std::optional<double> max_velocity;  // [m/s]; when absent, sqrt(2 |g| H) of the fluid
   double mach_factor = 10.0;
-  double artificial_viscosity = 0.0;        // Monaghan alpha; 0: off
-  bool laminar_viscosity = true;            // Morris laminar term with the fluid's viscosity
-  bool corrected_velocity_gradient = true;  // kernel-gradient-corrected shear rate
+  double artificial_viscosity = 0.0;          // Monaghan alpha; 0: off
+  bool laminar_viscosity = true;              // laminar viscous term with the fluid's viscosity
+  std::string viscous_operator = "auto";      // auto | morris | stress (seed eqs. 14-15)
+  std::string viscosity_mean = "arithmetic";  // arithmetic | harmonic, pair mean (Morris term)
+  bool corrected_velocity_gradient = true;    // kernel-gradient-corrected shear rate
   DensityTreatment density;
   std::optional<int> wall_layers;  // when absent, enough layers to cover the kernel support
   TimeStepFactors time_step;

@@ -32,6 +32,9 @@ struct Fields {
   std::vector<Vec3>& wall_velocity;  // wall particles: the no-slip ghost velocity (Adami 2012)
   std::vector<double>& viscosity;    // apparent viscosity eta_a of fluid particles
   std::vector<double>& shear_rate;   // gamma_dot of fluid particles
+  // Viscous stress tau = 2 eta_a S of every particle, for the stress-form viscous operator only
+  // (empty otherwise). Recomputed at every interaction, so it is not part of the store.
+  std::vector<Mat3> viscous_stress;
 };
 
 inline bool is_fluid(std::int32_t kind) {

@@ -19,6 +19,9 @@ Rates rates_of(std::size_t i, const Fields& f, const CellGrid& grid, const Kerne
   const double p_over_rho2_i = f.pressure[i] / (rho_i * rho_i);
   const Vec3& v_i = f.velocity[i];
   const double eta_i = f.viscosity[i];
+  const Mat3 tau_over_rho2_i = p.viscous_operator == ViscousOperator::stress
+                                   ? Mat3(f.viscous_stress[i] / (rho_i * rho_i))
+                                   : Mat3::Zero();
   const double diffusion_factor = 2.0 * p.delta * p.h * p.sound_speed;
   const double inverse_c2 = 1.0 / (p.sound_speed * p.sound_speed);
   Rates sum;
@@ -35,11 +38,17 @@ Rates rates_of(std::size_t i, const Fields& f, const CellGrid& grid, const Kerne
     sum.density_rate += m_j * v_ij.dot(grad);
     sum.acceleration -= (m_j * (p_over_rho2_i + f.pressure[j] / (rho_j * rho_j))) * grad;
     const Vec3 v_ij_viscous = fluid_j ? v_ij : Vec3(v_i - f.wall_velocity[j]);
-    if (p.laminar_viscosity) {
-      // Morris et al. (1997), eq. 8 with eta_i + eta_j; a wall takes the viscosity of i.
-      const double eta_sum = eta_i + (fluid_j ? f.viscosity[j] : eta_i);
+    if (p.viscous_operator != ViscousOperator::none) {
+      // Morris et al. (1997), eq. 8 with twice the pair's mean viscosity (arithmetic or
+      // harmonic); a wall takes the viscosity of i.
+      const double eta_j = fluid_j ? f.viscosity[j] : eta_i;
+      const double eta_sum =
+          p.harmonic_viscosity_mean ? 4.0 * eta_i * eta_j / (eta_i + eta_j) : eta_i + eta_j;
       sum.acceleration +=
           (m_j * eta_sum * r_dot_grad / (rho_i * rho_j * (r2 + p.eta2))) * v_ij_viscous;
+    }
+    if (p.viscous_operator == ViscousOperator::stress) {
+      sum.acceleration += m_j * (tau_over_rho2_i + f.viscous_stress[j] / (rho_j * rho_j)) * grad;
     }
     const double approach = v_ij_viscous.dot(r_ij);
     if (p.artificial_viscosity > 0.0 && approach < 0.0) {

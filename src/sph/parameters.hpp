@@ -7,6 +7,9 @@ namespace partimix::sph {
 
 enum class DensityDiffusion { none, molteni, fourtakas };
 
+// Laminar viscous term of the momentum equation (docs/sph.md, "Viscous operators").
+enum class ViscousOperator { none, morris, stress };
+
 struct Parameters {
   int dimensions = 3;
   double spacing = 0.0;                     // dp [m]
@@ -16,8 +19,9 @@ struct Parameters {
   double sound_speed = 0.0;                 // c0 [m/s]
   Vec3 gravity = Vec3::Zero();              // body acceleration [m/s^2]
   Vec3 hydrostatic_gravity = Vec3::Zero();  // gravity without its periodic-axis components
-  bool laminar_viscosity = true;
-  double artificial_viscosity = 0.0;  // Monaghan alpha
+  ViscousOperator viscous_operator = ViscousOperator::morris;
+  bool harmonic_viscosity_mean = false;  // pair viscosity of the Morris term
+  double artificial_viscosity = 0.0;     // Monaghan alpha
   DensityDiffusion diffusion = DensityDiffusion::fourtakas;
   double delta = 0.1;
 };

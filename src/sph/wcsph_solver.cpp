@@ -11,6 +11,7 @@
 #include "sph/shear_rate.hpp"
 #include "sph/shepard_filter.hpp"
 #include "sph/sound_speed.hpp"
+#include "sph/viscous_stress.hpp"
 #include "sph/wall_state.hpp"
 
 namespace partimix::sph {
@@ -34,6 +35,22 @@ DensityDiffusion diffusion_from(const std::string& name) {
                    "unknown model '" + name + "'");
 }
 
+// `auto`: the Morris term for a Newtonian fluid (the same answer as the stress form, at less
+// cost), the stress form where the viscosity varies (docs/sph.md, "Viscous operators").
+ViscousOperator viscous_operator_from(const Config& config, const FluidProperties& fluid) {
+  if (!config.laminar_viscosity)
+    return ViscousOperator::none;
+  if (config.viscous_operator == "auto") {
+    return fluid.rheology.model == "newtonian" ? ViscousOperator::morris : ViscousOperator::stress;
+  }
+  if (config.viscous_operator == "morris")
+    return ViscousOperator::morris;
+  if (config.viscous_operator == "stress")
+    return ViscousOperator::stress;
+  throw InputError(InputLocation{"", 0, 0, "sph.viscous_operator"},
+                   "unknown operator '" + config.viscous_operator + "'");
+}
+
 Vec3 without_periodic_axes(const Vec3& gravity, const Domain& domain) {
   Vec3 g = gravity;
   for (int axis = 0; axis < 3; ++axis) {
@@ -54,7 +71,8 @@ Parameters make_parameters(const Config& config, const FluidProperties& fluid, c
   p.gravity = gravity;
   p.hydrostatic_gravity = without_periodic_axes(gravity, domain);
   p.sound_speed = resolve_sound_speed(config, store, p.hydrostatic_gravity);
-  p.laminar_viscosity = config.laminar_viscosity;
+  p.viscous_operator = viscous_operator_from(config, fluid);
+  p.harmonic_viscosity_mean = config.viscosity_mean == "harmonic";
   p.artificial_viscosity = config.artificial_viscosity;
   p.diffusion = diffusion_from(config.density.diffusion);
   p.delta = config.density.delta;
@@ -86,6 +104,8 @@ WcsphSolver::WcsphSolver(ParticleStore& store, const Domain& domain, const Confi
     throw InputError(InputLocation{"", 0, 0, "sph.equation_of_state"},
                      "unknown equation of state '" + config.equation_of_state + "'");
   }
+  if (parameters_.viscous_operator == ViscousOperator::stress)
+    fields_.viscous_stress.resize(store_.size(), Mat3::Zero());
   initialise_fluid();
   fluid_count_ = static_cast<std::size_t>(std::count_if(
       fields_.kind.begin(), fields_.kind.end(), [](std::int32_t k) { return is_fluid(k); }));
@@ -146,9 +166,16 @@ void WcsphSolver::interact() {
   max_speed_ = extremes.max_speed;
 }
 
-// Apparent viscosity of each fluid particle from its shear rate (docs/rheology.md); a
-// Newtonian fluid skips the shear rates.
+// Apparent viscosity of each fluid particle from its shear rate (docs/rheology.md), and the
+// viscous stresses for the stress form; with the Morris form a Newtonian fluid skips the shear
+// rates.
 void WcsphSolver::update_viscosity() {
+  if (parameters_.viscous_operator == ViscousOperator::stress) {
+    max_viscosity_ =
+        compute_viscous_stress(fields_, fluid_count_, grid_, gradient_table_, kernel_table_,
+                               rheology_, domain_.dimensions, config_.corrected_velocity_gradient);
+    return;
+  }
   if (newtonian_ && steps_ > 0)
     return;  // constant, filled during the first step
   if (!newtonian_) {
@@ -168,7 +195,7 @@ double WcsphSolver::stable_dt() const {
   const double h = parameters_.h;
   double dt = factors.cfl * h / (parameters_.sound_speed + max_speed_);
   const double nu = max_viscosity_ / parameters_.reference_density;
-  if (parameters_.laminar_viscosity && nu > 0.0) {
+  if (parameters_.viscous_operator != ViscousOperator::none && nu > 0.0) {
     dt = std::min(dt, factors.viscous * h * h / nu);
   }
   if (max_acceleration_ > 0.0) {

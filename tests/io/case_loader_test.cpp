@@ -33,6 +33,8 @@ sph:
   mach_factor: 12
   artificial_viscosity: 0.02
   laminar_viscosity: false
+  viscous_operator: stress
+  viscosity_mean: harmonic
   density:
     diffusion: molteni
     delta: 0.2
@@ -126,6 +128,8 @@ TEST(CaseLoader, Full2DCaseHasTheSphSettingsWritten) {
   EXPECT_DOUBLE_EQ(sph.mach_factor, 12.0);
   EXPECT_DOUBLE_EQ(sph.artificial_viscosity, 0.02);
   EXPECT_FALSE(sph.laminar_viscosity);
+  EXPECT_EQ(sph.viscous_operator, "stress");
+  EXPECT_EQ(sph.viscosity_mean, "harmonic");
   EXPECT_EQ(sph.density.diffusion, "molteni");
   EXPECT_DOUBLE_EQ(sph.density.delta, 0.2);
   EXPECT_EQ(sph.density.shepard_interval, 30);
@@ -172,6 +176,8 @@ TEST(CaseLoader, MinimalCaseTakesTheDefaults) {
   EXPECT_FALSE(loaded.sph.wall_layers.has_value());
   EXPECT_EQ(loaded.sph.density.diffusion, "fourtakas");
   EXPECT_EQ(loaded.sph.sort_interval, 20);
+  EXPECT_EQ(loaded.sph.viscous_operator, "auto");
+  EXPECT_EQ(loaded.sph.viscosity_mean, "arithmetic");
 }
 
 TEST(CaseLoader, ThreeDimensionalCylinderCase) {

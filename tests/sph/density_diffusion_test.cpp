@@ -40,7 +40,7 @@ struct HydrostaticBlock {
     parameters.sound_speed = 20.0;
     parameters.gravity = Vec3(0.0, -9.81, 0.0);
     parameters.hydrostatic_gravity = parameters.gravity;
-    parameters.laminar_viscosity = false;
+    parameters.viscous_operator = ViscousOperator::none;
     parameters.diffusion = diffusion;
     store.resize(kSide * kSide);
     for (int j = 0; j < kSide; ++j) {

@@ -31,18 +31,37 @@ void operator delete(void* p, std::size_t) noexcept {
 namespace partimix {
 namespace {
 
-TEST(NoAllocation, SolverStepsDoNotAllocateAfterWarmUp) {
-  io::Case c = testing_cases::dam_break_2d(0.146, 0.146 / 10.0);
-  c.sph.density.shepard = true;
-  c.sph.density.shepard_interval = 7;
-  c.sph.sort_interval = 5;
+long allocations_in_40_steps_after_warm_up(const io::Case& c) {
   app::Simulation sim = app::build_simulation(c);
   for (int k = 0; k < 20; ++k)
     sim.solver->step(sim.solver->stable_dt());
   const long before = allocations.load();
   for (int k = 0; k < 40; ++k)
     sim.solver->step(sim.solver->stable_dt());
-  EXPECT_EQ(allocations.load() - before, 0) << "heap allocations during 40 steps";
+  return allocations.load() - before;
+}
+
+io::Case dam_break() {
+  io::Case c = testing_cases::dam_break_2d(0.146, 0.146 / 10.0);
+  c.sph.density.shepard = true;
+  c.sph.density.shepard_interval = 7;
+  c.sph.sort_interval = 5;
+  return c;
+}
+
+TEST(NoAllocation, SolverStepsDoNotAllocateAfterWarmUp) {
+  EXPECT_EQ(allocations_in_40_steps_after_warm_up(dam_break()), 0);
+}
+
+// A shear-thinning fluid: shear rates, viscosities and the stress-form viscous operator.
+TEST(NoAllocation, NonNewtonianStressFormStepsDoNotAllocate) {
+  io::Case c = dam_break();
+  c.fluid.rheology.model = "power_law";
+  c.fluid.rheology.consistency = 0.1;
+  c.fluid.rheology.flow_index = 0.5;
+  c.fluid.rheology.viscosity_max = 1.0;
+  c.sph.viscous_operator = "stress";
+  EXPECT_EQ(allocations_in_40_steps_after_warm_up(c), 0);
 }
 
 }  // namespace

@@ -1,0 +1,24 @@
+#pragma once
+// The part of the viscous stress that the Morris term leaves out, for the stress-form viscous
+// operator (docs/sph.md, "Viscous operators"; the seed's eqs. 14-15). With
+// tau = eta_a (G + G^T), div tau = div(eta_a G) + div(eta_a G^T): the Morris pair term gives the
+// first, and the second is the SPH divergence of T = eta_a G^T held per particle. G is the SPH
+// velocity gradient (sph/velocity_gradient.hpp). Wall particles take the kernel-weighted mean of
+// their fluid neighbours' T.
+#include <cstddef>
+
+#include "particles/cell_grid.hpp"
+#include "sph/fields.hpp"
+#include "sph/kernel_table.hpp"
+#include "sph/rheology.hpp"
+
+namespace partimix::sph {
+
+// Writes fields.shear_rate and fields.viscosity of the fluid particles [0, fluid_count) and
+// fields.viscous_stress (T) of all particles. `gradient_kernel` gives G, `kernel` the wall
+// means. Returns the largest apparent viscosity of the fluid.
+double compute_viscous_stress(Fields& fields, std::size_t fluid_count, const CellGrid& grid,
+                              const KernelTable& gradient_kernel, const KernelTable& kernel,
+                              const BoundedRheology& rheology, int dimensions, bool corrected);
+
+}  // namespace partimix::sph
