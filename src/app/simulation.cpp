@@ -46,18 +46,30 @@ int wall_layers_for(const sph::Config& config) {
   return static_cast<int>(std::ceil(support * config.smoothing_ratio - 1e-9));
 }
 
-// Fills `store` with the fluid regions and wall layers of the case (ids in creation order).
-void generate_particles(const io::Case& the_case, int wall_layers, ParticleStore& store) {
+// Fills `store` with the fluid regions and then the wall layers of the case (ids in creation
+// order), each wall a body with its motion.
+std::unique_ptr<geometry::MovingBodies> generate_particles(const io::Case& the_case,
+                                                           int wall_layers, ParticleStore& store) {
   const double spacing = the_case.sph.spacing;
   for (const auto& region : the_case.fluid.regions) {
     append(store, geometry::fill(*region.shape, spacing, the_case.domain), ParticleKind::fluid);
   }
-  for (const auto& wall : the_case.walls) {
+  auto bodies = std::make_unique<geometry::MovingBodies>(store, the_case.domain);
+  for (std::size_t w = 0; w < the_case.walls.size(); ++w) {
+    const io::WallSpec& wall = the_case.walls[w];
+    const std::size_t first = store.size();
     append(
         store,
         geometry::wall_layers(*wall.shape, spacing, wall_layers, wall.open_faces, the_case.domain),
         ParticleKind::wall);
+    auto motion = geometry::motion_registry().create(wall.motion.type, wall.motion);
+    if (!motion) {
+      throw case_error(the_case, fmt::format("walls[{}].motion.type", w),
+                       "unknown motion '" + wall.motion.type + "'");
+    }
+    bodies->add_body(first, std::move(motion));
   }
+  return bodies;
 }
 
 }  // namespace
@@ -65,7 +77,8 @@ void generate_particles(const io::Case& the_case, int wall_layers, ParticleStore
 Simulation build_simulation(const io::Case& the_case) {
   Simulation simulation;
   simulation.store = std::make_unique<ParticleStore>();
-  generate_particles(the_case, wall_layers_for(the_case.sph), *simulation.store);
+  simulation.bodies =
+      generate_particles(the_case, wall_layers_for(the_case.sph), *simulation.store);
   if (simulation.store->size() == 0) {
     throw case_error(the_case, "fluid.regions", "the case generates no particles");
   }
@@ -73,7 +86,8 @@ Simulation build_simulation(const io::Case& the_case) {
   try {
     simulation.solver = std::make_unique<sph::WcsphSolver>(
         *simulation.store, the_case.domain, the_case.sph,
-        sph::FluidProperties{the_case.fluid.density, the_case.fluid.rheology}, the_case.gravity);
+        sph::FluidProperties{the_case.fluid.density, the_case.fluid.rheology}, the_case.gravity,
+        simulation.bodies.get());
   } catch (const InputError& error) {
     throw case_error(the_case, error.location().key_path, error.message());
   }

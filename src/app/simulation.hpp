@@ -3,6 +3,7 @@
 // case geometry, and the solver chosen by the case's `solver` key.
 #include <memory>
 
+#include "geometry/moving_bodies.hpp"
 #include "io/case.hpp"
 #include "particles/particle_store.hpp"
 #include "particles/solver.hpp"
@@ -11,6 +12,7 @@ namespace partimix::app {
 
 struct Simulation {
   std::unique_ptr<ParticleStore> store;
+  std::unique_ptr<geometry::MovingBodies> bodies;  // one per wall of the case
   std::unique_ptr<Solver> solver;
 };
 

@@ -9,6 +9,7 @@
 
 #include "core/vec.hpp"
 #include "geometry/lattice.hpp"
+#include "geometry/motion.hpp"
 #include "geometry/shape.hpp"
 #include "particles/domain.hpp"
 #include "sph/config.hpp"
@@ -35,6 +36,7 @@ struct FluidSpec {
 struct WallSpec {
   std::shared_ptr<const geometry::Shape> shape;
   std::vector<geometry::Face> open_faces;
+  geometry::MotionConfig motion;  // prescribed motion of this wall as a body
 };
 
 struct OutputSpec {

@@ -78,12 +78,25 @@ Field<Vec3>& ParticleStore::add_vector(const std::string& name, const std::strin
   return vectors_.back();
 }
 
+Field<std::int32_t>& ParticleStore::add_integer(const std::string& name, const std::string& unit,
+                                                bool output) {
+  if (has_name(name)) {
+    throw std::logic_error("particle field '" + name + "' added twice");
+  }
+  integers_.push_back({name, unit, output, std::vector<std::int32_t>(size(), 0)});
+  return integers_.back();
+}
+
 const Field<double>* ParticleStore::find_scalar(const std::string& name) const {
   return find_in(scalars_, name);
 }
 
 const Field<Vec3>* ParticleStore::find_vector(const std::string& name) const {
   return find_in(vectors_, name);
+}
+
+const Field<std::int32_t>* ParticleStore::find_integer(const std::string& name) const {
+  return find_in(integers_, name);
 }
 
 void ParticleStore::reorder(std::span<const std::uint32_t> new_to_old) {

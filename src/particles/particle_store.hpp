@@ -39,10 +39,13 @@ class ParticleStore {
   // valid for the life of the store.
   Field<double>& add_scalar(const std::string& name, const std::string& unit, bool output = true);
   Field<Vec3>& add_vector(const std::string& name, const std::string& unit, bool output = true);
+  Field<std::int32_t>& add_integer(const std::string& name, const std::string& unit,
+                                   bool output = true);
 
   // Finds a field by name; nullptr if absent.
   const Field<double>* find_scalar(const std::string& name) const;
   const Field<Vec3>* find_vector(const std::string& name) const;
+  const Field<std::int32_t>* find_integer(const std::string& name) const;
 
   std::vector<std::int64_t>& id() { return ids_->values; }
   std::vector<std::int32_t>& kind() { return kinds_->values; }

@@ -82,7 +82,8 @@ Parameters make_parameters(const Config& config, const FluidProperties& fluid, c
 }  // namespace
 
 WcsphSolver::WcsphSolver(ParticleStore& store, const Domain& domain, const Config& config,
-                         const FluidProperties& fluid, const Vec3& gravity)
+                         const FluidProperties& fluid, const Vec3& gravity,
+                         geometry::MovingBodies* bodies)
     : store_(store),
       domain_(domain),
       config_(config),
@@ -98,6 +99,7 @@ WcsphSolver::WcsphSolver(ParticleStore& store, const Domain& domain, const Confi
       kernel_table_(*kernel_, parameters_.h, domain.dimensions),
       gradient_table_(*gradient_kernel_, parameters_.h, domain.dimensions),
       grid_(domain, std::max(kernel_table_.support_radius(), gradient_table_.support_radius())),
+      bodies_(bodies),
       rheology_(fluid.rheology),
       newtonian_(fluid.rheology.model == "newtonian") {
   if (!eos_) {
@@ -109,6 +111,7 @@ WcsphSolver::WcsphSolver(ParticleStore& store, const Domain& domain, const Confi
   initialise_fluid();
   fluid_count_ = static_cast<std::size_t>(std::count_if(
       fields_.kind.begin(), fields_.kind.end(), [](std::int32_t k) { return is_fluid(k); }));
+  move_bodies(0.0);
   sort_by_cell();
   interact();
 }
@@ -133,6 +136,11 @@ void WcsphSolver::initialise_fluid() {
     }
   }
   wrap_positions();
+}
+
+void WcsphSolver::move_bodies(double time) {
+  if (bodies_ != nullptr)
+    bodies_->move_to(time);
 }
 
 void WcsphSolver::wrap_positions() {
@@ -238,11 +246,16 @@ void WcsphSolver::correct(double dt) {
   wrap_positions();
 }
 
+// Moving walls are placed at the instant of each rate evaluation: t + dt/2 for the predictor's
+// rates, t + dt for the end of the step.
 void WcsphSolver::step(double dt) {
   predict(dt);
+  move_bodies(time_ + 0.5 * dt);
   interact();
   correct(dt);
   ++steps_;
+  time_ += dt;
+  move_bodies(time_);
   if (config_.density.shepard &&
       steps_ % static_cast<std::size_t>(config_.density.shepard_interval) == 0) {
     grid_.build(fields_.position);

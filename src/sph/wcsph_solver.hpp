@@ -6,6 +6,7 @@
 #include <string_view>
 #include <vector>
 
+#include "geometry/moving_bodies.hpp"
 #include "particles/cell_grid.hpp"
 #include "particles/solver.hpp"
 #include "sph/config.hpp"
@@ -28,8 +29,11 @@ class WcsphSolver final : public Solver {
   // `store` holds fluid and wall particles with kind and position set. The solver sets masses
   // (rho0 dp^d), hydrostatic initial densities and its own fields. Throws InputError
   // naming the case key when the configuration cannot be used (e.g. no way to set c0).
+  // `bodies` (may be null) moves the wall particles of bodies with prescribed motions; it
+  // must outlive the solver.
   WcsphSolver(ParticleStore& store, const Domain& domain, const Config& config,
-              const FluidProperties& fluid, const Vec3& gravity);
+              const FluidProperties& fluid, const Vec3& gravity,
+              geometry::MovingBodies* bodies = nullptr);
 
   std::string_view name() const override { return "sph"; }
   const ParticleStore& particles() const override { return store_; }
@@ -46,6 +50,7 @@ class WcsphSolver final : public Solver {
   void predict(double dt);
   void correct(double dt);
   void wrap_positions();
+  void move_bodies(double time);
   void sort_by_cell();
   void warn_once_if_too_fast();
   void update_viscosity();
@@ -64,6 +69,8 @@ class WcsphSolver final : public Solver {
   double max_acceleration_ = 0.0;
   double max_speed_ = 0.0;
   std::size_t steps_ = 0;
+  double time_ = 0.0;
+  geometry::MovingBodies* bodies_;
   bool warned_about_speed_ = false;
   BoundedRheology rheology_;
   bool newtonian_ = true;

@@ -25,7 +25,8 @@ inline io::Case tank_2d(double width, double depth, double spacing) {
       {std::make_shared<geometry::Box>(Vec3(0.0, 0.0, -1.0), Vec3(width, depth, 1.0))});
   c.walls.push_back(
       {std::make_shared<geometry::Box>(Vec3(0.0, 0.0, -1.0), Vec3(width, 2.0 * depth, 1.0)),
-       {geometry::Face{1, 1}}});
+       {geometry::Face{1, 1}},
+       {}});
   return c;
 }
 
@@ -52,7 +53,7 @@ inline io::Case poiseuille_2d(double width, double length, double spacing, doubl
   const auto channel =
       std::make_shared<geometry::Box>(Vec3(0.0, 0.0, -1.0), Vec3(length, width, 1.0));
   c.fluid.regions.push_back({channel});
-  c.walls.push_back({channel, {}});
+  c.walls.push_back({channel, {}, {}});
   return c;
 }
 
@@ -78,7 +79,8 @@ inline io::Case dam_break_2d(double column, double spacing) {
       {std::make_shared<geometry::Box>(Vec3(0.0, 0.0, -1.0), Vec3(column, 2.0 * column, 1.0))});
   c.walls.push_back(
       {std::make_shared<geometry::Box>(Vec3(0.0, 0.0, -1.0), Vec3(4.0 * column, 3.0 * column, 1.0)),
-       {geometry::Face{1, 1}}});
+       {geometry::Face{1, 1}},
+       {}});
   return c;
 }
 

@@ -8,8 +8,9 @@
 // The viscosity varies with r here, so the Morris term alone, which approximates
 // div(eta grad v), misses the part div(eta (grad v)^T) = -eta'(r) v / r e_theta of the viscous
 // stress; the stress-form operator (docs/sph.md, "Viscous operators") includes it.
-// Fluid: the seed's CMC (K = 13.9 Pa s^n, n = 0.47); R1 = 5 mm, R2 = 10 mm, Omega = 2 rad/s,
-// gap / dp = 10 on concentric rings (a polar lattice, so that both walls are smooth); steady
+// The inner cylinder is a body in rotation (geometry/rotation_motion.hpp): its wall particles
+// turn with it. Fluid: the seed's CMC (K = 13.9 Pa s^n, n = 0.47); R1 = 5 mm, R2 = 10 mm, Omega = 2
+// rad/s, gap / dp = 10 on concentric rings (a polar lattice, so that both walls are smooth); steady
 // after 0.01 s (unchanged to 1e-4 at 0.02 s).
 // Tolerances: L2 deviation of v_theta within 2% of Omega R1 (measured 1.36%, 0.96% at gap / dp
 // = 10, 14), and the mean of eta_a gamma_dot r^2 over particles more than 2h from both walls
@@ -62,10 +63,6 @@ void add_rings(ParticleStore& store, double first, int count, int step, Particle
       store.position()[i] = Vec3(r * std::cos(angle), r * std::sin(angle), 0.0);
       store.kind()[i] = static_cast<std::int32_t>(kind);
       store.id()[i] = static_cast<std::int64_t>(i);
-      const bool inner_wall = kind == ParticleKind::wall && r < kInner;
-      store.velocity()[i] = inner_wall ? Vec3(-kOmega * store.position()[i].y(),
-                                              kOmega * store.position()[i].x(), 0.0)
-                                       : Vec3::Zero();
     }
   }
 }
@@ -78,12 +75,20 @@ struct Measured {
 Measured run(const std::string& viscous_operator) {
   ParticleStore store;
   add_rings(store, kInner + 0.5 * kSpacing, kRings, 1, ParticleKind::fluid);
-  add_rings(store, kInner - 0.5 * kSpacing, 3, -1, ParticleKind::wall);
-  add_rings(store, kOuter + 0.5 * kSpacing, 3, 1, ParticleKind::wall);
   Domain domain;
   domain.dimensions = 2;
   domain.lo = Vec3(-1.5 * kOuter, -1.5 * kOuter, 0.0);
   domain.hi = Vec3(1.5 * kOuter, 1.5 * kOuter, 0.0);
+  geometry::MovingBodies bodies(store, domain);
+  std::size_t first = store.size();
+  add_rings(store, kInner - 0.5 * kSpacing, 3, -1, ParticleKind::wall);
+  geometry::MotionConfig rotation;
+  rotation.type = "rotation";
+  rotation.rpm = kOmega * 60.0 / (2.0 * std::numbers::pi);
+  bodies.add_body(first, geometry::motion_registry().create("rotation", rotation));
+  first = store.size();
+  add_rings(store, kOuter + 0.5 * kSpacing, 3, 1, ParticleKind::wall);
+  bodies.add_body(first, geometry::motion_registry().create("fixed", {}));
   sph::Config config;
   config.spacing = kSpacing;
   config.max_velocity = kOmega * kInner;
@@ -94,7 +99,7 @@ Measured run(const std::string& viscous_operator) {
   fluid.rheology.flow_index = kIndex;
   fluid.rheology.viscosity_min = 0.1;
   fluid.rheology.viscosity_max = 1000.0;
-  sph::WcsphSolver solver(store, domain, config, fluid, Vec3::Zero());
+  sph::WcsphSolver solver(store, domain, config, fluid, Vec3::Zero(), &bodies);
   const double end_time = 0.01;
   for (double t = 0.0; t < end_time;) {
     const double dt = std::min(solver.stable_dt(), end_time - t);
