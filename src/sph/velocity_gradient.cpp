@@ -12,21 +12,22 @@ struct GradientSums {
   Mat3 moment = Mat3::Zero();    // sum_j V_j (x_j - x_i) (x) grad W
 };
 
-const Vec3& boundary_velocity(std::size_t i, const Fields& f) {
-  return is_fluid(f.kind[i]) ? f.velocity[i] : f.wall_velocity[i];
+// A wall neighbour enters with its no-slip ghost velocity.
+const Vec3& neighbour_velocity(std::size_t j, const Fields& f) {
+  return is_fluid(f.kind[j]) ? f.velocity[j] : f.wall_velocity[j];
 }
 
 GradientSums gradient_sums(std::size_t i, const Fields& f, const CellGrid& grid,
                            const KernelTable& kernel) {
   GradientSums sums;
-  const Vec3& v_i = boundary_velocity(i, f);
+  const Vec3& v_i = f.velocity[i];
   grid.for_each_neighbour(i, f.position, [&](std::size_t j, const Vec3& r_ij, double r2) {
     if (j == i)
       return;
     const double r = std::sqrt(r2);
     const Vec3 grad = (kernel.derivative(r) / r) * r_ij;
     const double volume = f.mass[j] / f.density[j];
-    sums.velocity += volume * (boundary_velocity(j, f) - v_i) * grad.transpose();
+    sums.velocity += volume * (neighbour_velocity(j, f) - v_i) * grad.transpose();
     sums.moment -= volume * r_ij * grad.transpose();
   });
   return sums;

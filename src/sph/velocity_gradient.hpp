@@ -1,10 +1,11 @@
 #pragma once
-// SPH velocity gradient of one particle (docs/rheology.md, "Shear rate"; the seed's eq. 16):
+// SPH velocity gradient of one fluid particle (docs/rheology.md, "Shear rate"; the seed's
+// eq. 16):
 //   G_i = sum_j V_j (v_j - v_i) (x) grad_i W_ij
-// Wall particles enter with their no-slip ghost velocity (Adami et al. 2012), also as i.
+// Wall neighbours enter with their no-slip ghost velocity (Adami et al. 2012).
 // `corrected` multiplies G by the inverse of M_i = sum_j V_j (x_j - x_i) (x) grad_i W_ij (Bonet
 // and Lok 1999), which makes the gradient exact for linear velocity fields also where the kernel
-// is cut (free surface, outer wall layers).
+// is cut (free surface).
 #include <cmath>
 #include <cstddef>
 
