@@ -1,11 +1,15 @@
 #pragma once
 // A measurement on a particle set (DESIGN.md, "One run"): it names its columns (with units)
-// for series.csv and fills one value per column from a read-only view of the particles.
+// for series.csv and fills one value per column from a read-only view of the particles at a
+// sample time; at the end it may add figures (time averages, final values) to the run summary.
+#include <map>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "analysis/sampling_cells.hpp"
 #include "core/registry.hpp"
+#include "geometry/motion.hpp"
 #include "particles/particle_store.hpp"
 
 namespace partimix::analysis {
@@ -20,16 +24,41 @@ class Analysis {
   virtual ~Analysis() = default;
   virtual std::vector<Column> columns() const = 0;
   // Writes columns().size() values into `values`.
-  virtual void sample(const ParticleStore& particles, std::span<double> values) const = 0;
+  virtual void sample(const ParticleStore& particles, double time, std::span<double> values) = 0;
+  // True when sample() reads the field "body_force" (Solver::update_body_forces).
+  virtual bool needs_body_forces() const { return false; }
+  // Adds the analysis' summary figures (name -> value) for run.json's "figures".
+  virtual void add_figures(std::map<std::string, double>& /*figures*/) const {}
+};
+
+// The fluid's scales for Reynolds numbers (docs/power.md): a Newtonian fluid has K = mu, n = 1.
+struct FlowScales {
+  double density = 0.0;      // rho [kg/m^3]
+  double consistency = 0.0;  // K_s [Pa s^n]
+  double flow_index = 1.0;   // n [-]
+};
+
+// A body as the load analyses see it: its index, its motion and where the vessel axis is.
+struct BodyOptions {
+  int index = 0;                             // the wall's index in the case
+  const geometry::Motion* motion = nullptr;  // its prescribed motion
+  geometry::MotionConfig motion_config;      // the motion's settings (axis, speeds)
+  Vec3 vessel_axis_point = Vec3::Zero();     // a point of the vessel axis (parallel to the axis)
+  double average_revolutions = 1.0;          // summary: mean over the last k revolutions
 };
 
 // Options an analysis may take from the case file.
 struct AnalysisOptions {
-  int axis = 0;
+  int axis = 0;  // front_position
+  BodyOptions body;
+  double diameter = 0.0;       // power_number: impeller diameter d_a (d_R) [m]
+  double metzner_otto = 7.54;  // power_number: K of the Metzner-Otto shear rate K N [-]
+  FlowScales fluid;
+  MixingRegion mixing;  // mixing: the sampling cells
 };
 
-// Analyses a case file may ask for, by name: front_position. (Kinetic energy and the largest
-// speed are always sampled.)
+// Analyses a case file may ask for, by name: front_position, body_loads, power_number, mixing.
+// (Kinetic energy and the largest speed are always sampled.)
 const Registry<Analysis, const AnalysisOptions&>& analysis_registry();
 
 }  // namespace partimix::analysis

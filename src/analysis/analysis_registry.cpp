@@ -1,5 +1,8 @@
 #include "analysis/analysis.hpp"
+#include "analysis/body_loads.hpp"
 #include "analysis/front_position.hpp"
+#include "analysis/mixing.hpp"
+#include "analysis/power_number.hpp"
 
 namespace partimix::analysis {
 
@@ -8,6 +11,11 @@ const Registry<Analysis, const AnalysisOptions&>& analysis_registry() {
     Registry<Analysis, const AnalysisOptions&> r;
     r.add("front_position",
           [](const AnalysisOptions& o) { return std::make_unique<FrontPosition>(o.axis); });
+    r.add("body_loads",
+          [](const AnalysisOptions& o) { return std::make_unique<BodyLoads>(o.body); });
+    r.add("mixing", [](const AnalysisOptions& o) { return std::make_unique<Mixing>(o.mixing); });
+    r.add("power_number",
+          [](const AnalysisOptions& o) { return std::make_unique<PowerNumber>(o); });
     return r;
   }();
   return registry;

@@ -10,7 +10,8 @@ std::vector<Column> FrontPosition::columns() const {
   return {{std::string("front_") + axis_names[axis_], "m"}};
 }
 
-void FrontPosition::sample(const ParticleStore& particles, std::span<double> values) const {
+void FrontPosition::sample(const ParticleStore& particles, double /*time*/,
+                           std::span<double> values) {
   double front = std::numeric_limits<double>::lowest();
   for (std::size_t i = 0; i < particles.size(); ++i) {
     if (particles.is_fluid(i))

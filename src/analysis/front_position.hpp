@@ -8,7 +8,7 @@ class FrontPosition final : public Analysis {
  public:
   explicit FrontPosition(int axis) : axis_(axis) {}
   std::vector<Column> columns() const override;
-  void sample(const ParticleStore& particles, std::span<double> values) const override;
+  void sample(const ParticleStore& particles, double time, std::span<double> values) override;
 
  private:
   int axis_;

@@ -2,7 +2,8 @@
 
 namespace partimix::analysis {
 
-void KineticEnergy::sample(const ParticleStore& particles, std::span<double> values) const {
+void KineticEnergy::sample(const ParticleStore& particles, double /*time*/,
+                           std::span<double> values) {
   double energy = 0.0;
   for (std::size_t i = 0; i < particles.size(); ++i) {
     if (particles.is_fluid(i)) {

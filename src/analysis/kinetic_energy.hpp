@@ -7,7 +7,7 @@ namespace partimix::analysis {
 class KineticEnergy final : public Analysis {
  public:
   std::vector<Column> columns() const override { return {{"kinetic_energy", "J"}}; }
-  void sample(const ParticleStore& particles, std::span<double> values) const override;
+  void sample(const ParticleStore& particles, double time, std::span<double> values) override;
 };
 
 }  // namespace partimix::analysis

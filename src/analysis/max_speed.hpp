@@ -7,7 +7,7 @@ namespace partimix::analysis {
 class MaxSpeed final : public Analysis {
  public:
   std::vector<Column> columns() const override { return {{"max_speed", "m/s"}}; }
-  void sample(const ParticleStore& particles, std::span<double> values) const override;
+  void sample(const ParticleStore& particles, double time, std::span<double> values) override;
 };
 
 }  // namespace partimix::analysis

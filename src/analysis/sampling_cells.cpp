@@ -117,4 +117,11 @@ int BoxCells::cell_of(const Vec3& x) const {
   return index;
 }
 
+std::unique_ptr<SamplingCells> make_sampling_cells(const MixingRegion& region) {
+  const auto& n = region.cells;
+  if (region.cylinder)
+    return std::make_unique<CylinderCells>(region.cylinder_region, n[0], n[1], n[2]);
+  return std::make_unique<BoxCells>(region.lo, region.hi, n);
+}
+
 }  // namespace partimix::analysis

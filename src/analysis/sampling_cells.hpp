@@ -3,6 +3,7 @@
 // from a point to the index of the cell that holds it. The uniformity index and the Lacey index
 // read per-cell particle counts tallied through this map, so they serve any region shape.
 #include <array>
+#include <memory>
 
 #include "core/vec.hpp"
 
@@ -81,5 +82,18 @@ class BoxCells final : public SamplingCells {
   std::array<int, 3> n_;
   Vec3 cells_per_length_;
 };
+
+// A sampling region and its cells, as a case file gives them (analyses of type mixing).
+struct MixingRegion {
+  bool cylinder = true;               // a cylinder (rings x sectors x layers) or a box
+  CylinderRegion cylinder_region;     // cylinder
+  Vec3 lo = Vec3::Zero();             // box
+  Vec3 hi = Vec3::Zero();             // box
+  std::array<int, 3> cells{1, 1, 1};  // rings, sectors, layers; or nx, ny, nz
+  int min_count = 1;                  // Lacey: cells with fewer particles are not counted
+};
+
+// Throws std::invalid_argument for a region CylinderCells or BoxCells refuse.
+std::unique_ptr<SamplingCells> make_sampling_cells(const MixingRegion& region);
 
 }  // namespace partimix::analysis

@@ -13,6 +13,7 @@
 #include "app/interrupt.hpp"
 #include "app/runner.hpp"
 #include "app/simulation.hpp"
+#include "app/tools_dir.hpp"
 #include "core/error.hpp"
 #include "io/case.hpp"
 
@@ -23,6 +24,11 @@ void print_parameters(const Solver& solver) {
   for (const auto& [name, value] : solver.derived_parameters()) {
     fmt::print(stderr, "  {:<24} {:.6g}\n", name, value);
   }
+}
+
+void print_figures(const std::map<std::string, double>& figures) {
+  for (const auto& [name, value] : figures)
+    fmt::print(stderr, "  {:<24} {:.6g}\n", name, value);
 }
 
 int exit_code_of(const std::string& status) {
@@ -51,7 +57,7 @@ int run_command(const RunArguments& arguments) {
                options.output_dir.string());
     print_parameters(*simulation.solver);
     install_interrupt_handler();
-    Runner runner(the_case, *simulation.solver, options);
+    Runner runner(the_case, *simulation.solver, simulation.bodies.get(), options);
     const io::RunSummary summary = runner.run();
     const double throughput =
         summary.wall_seconds > 0.0
@@ -62,6 +68,7 @@ int run_command(const RunArguments& arguments) {
                throughput);
     if (!summary.message.empty())
       fmt::print(stderr, "{}\n", summary.message);
+    print_figures(runner.figures());
     return exit_code_of(summary.status);
   } catch (const InputError& error) {
     fmt::print(stderr, "error: {}\n", error.what());
@@ -86,9 +93,7 @@ int check_command(const std::string& case_file, const std::vector<std::string>& 
 }
 
 int plot_command(const std::filesystem::path& output_dir) {
-  const char* tools = std::getenv("PARTIMIX_TOOLS_DIR");
-  const std::filesystem::path script =
-      std::filesystem::path(tools ? tools : PARTIMIX_TOOLS_DIR) / "plot_series.py";
+  const std::filesystem::path script = tools_dir() / "plot_series.py";
   const std::string command =
       fmt::format("/usr/bin/python3 '{}' '{}'", script.string(), output_dir.string());
   const int status = std::system(command.c_str());

@@ -1,7 +1,8 @@
-// partimix: run, check and plot particle simulations of mixing (README.md).
+// partimix: run, check, sweep and plot particle simulations of mixing (README.md).
 #include <CLI/CLI.hpp>
 
 #include "app/commands.hpp"
+#include "app/sweep.hpp"
 #include "core/error.hpp"
 
 int main(int argc, char** argv) {
@@ -25,6 +26,18 @@ int main(int argc, char** argv) {
   check_cmd->add_option("case", check_file, "Case file (YAML)")->required();
   check_cmd->add_option("--set,-s", check_overrides, "Override a case key: key.path=value");
 
+  app::SweepArguments sweep;
+  CLI::App* sweep_cmd =
+      cli.add_subcommand("sweep", "Run a case for every combination of varied keys; one table");
+  sweep_cmd->add_option("case", sweep.case_file, "Case file (YAML)")->required();
+  sweep_cmd->add_option("--vary", sweep.varied, "Vary a case key: key.path=v1,v2,...")->required();
+  sweep_cmd->add_option("--set,-s", sweep.overrides, "Override a case key in every run");
+  sweep_cmd->add_option("--out,-o", sweep.output_dir, "Sweep folder (default: out/<name>_sweep)");
+  sweep_cmd->add_option("--jobs,-j", sweep.jobs, "Runs at a time (default: 1)")
+      ->check(CLI::PositiveNumber);
+  sweep_cmd->add_option("--threads,-t", sweep.threads, "Threads per run (default: cores / jobs)")
+      ->check(CLI::PositiveNumber);
+
   std::string plot_dir;
   CLI::App* plot_cmd = cli.add_subcommand("plot", "Plot series.csv of an output folder to PNG");
   plot_cmd->add_option("outdir", plot_dir, "Output folder of a run")->required();
@@ -39,5 +52,7 @@ int main(int argc, char** argv) {
     return app::run_command(run);
   if (check_cmd->parsed())
     return app::check_command(check_file, check_overrides);
+  if (sweep_cmd->parsed())
+    return app::sweep_command(sweep);
   return app::plot_command(plot_dir);
 }

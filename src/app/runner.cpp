@@ -22,12 +22,41 @@
 namespace partimix::app {
 namespace {
 
-std::vector<std::unique_ptr<analysis::Analysis>> make_analyses(const io::Case& the_case) {
+// K_s and n of Reynolds numbers (docs/power.md); the loader admits power numbers only for
+// these models.
+analysis::FlowScales flow_scales(const io::FluidSpec& fluid) {
+  const sph::RheologyConfig& rheology = fluid.rheology;
+  if (rheology.model == "newtonian")
+    return {fluid.density, rheology.viscosity, 1.0};
+  return {fluid.density, rheology.consistency, rheology.flow_index};
+}
+
+analysis::AnalysisOptions options_of(const io::AnalysisSpec& spec, const io::Case& the_case,
+                                     const geometry::MovingBodies* bodies) {
+  analysis::AnalysisOptions options;
+  options.axis = spec.axis;
+  options.diameter = spec.diameter;
+  options.metzner_otto = spec.metzner_otto;
+  options.fluid = flow_scales(the_case.fluid);
+  options.mixing = spec.mixing;
+  if (spec.type == "body_loads" || spec.type == "power_number") {
+    if (bodies == nullptr)
+      throw RunError("the analysis '" + spec.type + "' needs the bodies of the simulation");
+    const auto body = static_cast<std::size_t>(spec.body);
+    options.body = {spec.body, &bodies->motion(body), the_case.walls[body].motion,
+                    spec.vessel_axis_point, spec.average_revolutions};
+  }
+  return options;
+}
+
+std::vector<std::unique_ptr<analysis::Analysis>> make_analyses(
+    const io::Case& the_case, const geometry::MovingBodies* bodies) {
   std::vector<std::unique_ptr<analysis::Analysis>> analyses;
   analyses.push_back(std::make_unique<analysis::KineticEnergy>());
   analyses.push_back(std::make_unique<analysis::MaxSpeed>());
   for (const auto& spec : the_case.analyses) {
-    analyses.push_back(analysis::analysis_registry().create(spec.type, {spec.axis}));
+    analyses.push_back(
+        analysis::analysis_registry().create(spec.type, options_of(spec, the_case, bodies)));
   }
   return analyses;
 }
@@ -44,11 +73,15 @@ std::vector<io::SeriesColumn> series_columns(
 
 }  // namespace
 
-Runner::Runner(const io::Case& the_case, Solver& solver, RunOptions options)
+Runner::Runner(const io::Case& the_case, Solver& solver, const geometry::MovingBodies* bodies,
+               RunOptions options)
     : case_(the_case),
       solver_(solver),
       options_(std::move(options)),
-      analyses_(make_analyses(the_case)) {}
+      analyses_(make_analyses(the_case, bodies)) {
+  for (const auto& a : analyses_)
+    needs_body_forces_ = needs_body_forces_ || a->needs_body_forces();
+}
 
 // Removes what an earlier run left in the folder, so that no stale frame mixes in.
 void Runner::prepare_output_dir() const {
@@ -73,10 +106,12 @@ void Runner::sample(double time, std::size_t steps, double dt) {
   row_.push_back(time);
   row_.push_back(static_cast<double>(steps));
   row_.push_back(dt);
+  if (needs_body_forces_)
+    solver_.update_body_forces();
   for (const auto& a : analyses_) {
     const std::size_t first = row_.size();
     row_.resize(first + a->columns().size());
-    a->sample(solver_.particles(), std::span<double>(row_).subspan(first));
+    a->sample(solver_.particles(), time, std::span<double>(row_).subspan(first));
   }
   series_->write_row(row_);
   last_sample_time_ = time;
@@ -94,11 +129,15 @@ void Runner::write_metadata(const io::RunSummary& summary) const {
   nlohmann::json parameters;
   for (const auto& [name, value] : solver_.derived_parameters())
     parameters[name] = value;
+  nlohmann::json figures = nlohmann::json::object();
+  for (const auto& [name, value] : figures_)
+    figures[name] = value;
   const nlohmann::json content{{"partimix_version", PARTIMIX_VERSION},
                                {"case_file", case_.file},
                                {"case", case_.resolved},
                                {"derived", parameters},
-                               {"run", io::to_json(summary)}};
+                               {"run", io::to_json(summary)},
+                               {"figures", figures}};
   io::write_run_json(options_.output_dir / "run.json", content);
 }
 
@@ -171,6 +210,8 @@ io::RunSummary Runner::run() {
   summary.steps = steps;
   summary.simulated_time = t;
   summary.wall_seconds = wall.seconds();
+  for (const auto& a : analyses_)
+    a->add_figures(figures_);
   write_metadata(summary);
   return summary;
 }

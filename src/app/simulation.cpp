@@ -1,5 +1,6 @@
 #include "app/simulation.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -46,22 +47,58 @@ int wall_layers_for(const sph::Config& config) {
   return static_cast<int>(std::ceil(support * config.smoothing_ratio - 1e-9));
 }
 
+// Whether `x` lies inside the solid wall or closer than half a spacing to its surface, where
+// the fluid must clear the body (docs/geometry-meshes.md, "Solid walls").
+// The bounding-box test first spares most fluid points the distance query (costly for a mesh).
+bool blocked_by(const io::WallSpec& wall, const Vec3& x, double spacing) {
+  if (!wall.solid)
+    return false;
+  const double clearance = 0.5 * spacing;
+  const Vec3 lo = wall.shape->lower().array() - clearance;
+  const Vec3 hi = wall.shape->upper().array() + clearance;
+  const bool near_box = (x.array() > lo.array()).all() && (x.array() < hi.array()).all();
+  return near_box && wall.shape->signed_distance(x) < clearance;
+}
+
+// The fluid lattice points of `region`, less those that a solid wall blocks.
+std::vector<Vec3> fluid_points(const io::Case& the_case, const io::FluidRegion& region) {
+  const double spacing = the_case.sph.spacing;
+  std::vector<Vec3> points = geometry::fill(*region.shape, spacing, the_case.domain);
+  std::erase_if(points, [&](const Vec3& x) {
+    return std::any_of(the_case.walls.begin(), the_case.walls.end(),
+                       [&](const io::WallSpec& wall) { return blocked_by(wall, x, spacing); });
+  });
+  return points;
+}
+
+// The wall particles of wall `w`: layers inside a solid body, outside a container.
+std::vector<Vec3> wall_points(const io::Case& the_case, std::size_t w, int layers) {
+  const io::WallSpec& wall = the_case.walls[w];
+  const double spacing = the_case.sph.spacing;
+  if (!wall.solid) {
+    return geometry::wall_layers(*wall.shape, spacing, layers, wall.open_faces, the_case.domain);
+  }
+  std::vector<Vec3> points = geometry::inside_layers(*wall.shape, spacing, layers, the_case.domain);
+  if (points.empty()) {
+    throw case_error(the_case, fmt::format("walls[{}]", w),
+                     "no lattice point lies inside this solid wall: it is thinner than about half "
+                     "a spacing; make it thicker or sph.spacing smaller");
+  }
+  return points;
+}
+
 // Fills `store` with the fluid regions and then the wall layers of the case (ids in creation
 // order), each wall a body with its motion.
 std::unique_ptr<geometry::MovingBodies> generate_particles(const io::Case& the_case,
                                                            int wall_layers, ParticleStore& store) {
-  const double spacing = the_case.sph.spacing;
   for (const auto& region : the_case.fluid.regions) {
-    append(store, geometry::fill(*region.shape, spacing, the_case.domain), ParticleKind::fluid);
+    append(store, fluid_points(the_case, region), ParticleKind::fluid);
   }
   auto bodies = std::make_unique<geometry::MovingBodies>(store, the_case.domain);
   for (std::size_t w = 0; w < the_case.walls.size(); ++w) {
     const io::WallSpec& wall = the_case.walls[w];
     const std::size_t first = store.size();
-    append(
-        store,
-        geometry::wall_layers(*wall.shape, spacing, wall_layers, wall.open_faces, the_case.domain),
-        ParticleKind::wall);
+    append(store, wall_points(the_case, w, wall_layers), ParticleKind::wall);
     auto motion = geometry::motion_registry().create(wall.motion.type, wall.motion);
     if (!motion) {
       throw case_error(the_case, fmt::format("walls[{}].motion.type", w),
@@ -70,6 +107,18 @@ std::unique_ptr<geometry::MovingBodies> generate_particles(const io::Case& the_c
     bodies->add_body(first, std::move(motion));
   }
   return bodies;
+}
+
+// Tag 1 for the tracer fluid (fluid.tracer), 0 for the rest: the mixing analyses and the colour
+// of the VTK frames (field "tag").
+void tag_tracer(const io::Case& the_case, ParticleStore& store) {
+  if (!the_case.fluid.tracer)
+    return;
+  const io::TracerPlane& plane = *the_case.fluid.tracer;
+  for (std::size_t i = 0; i < store.size(); ++i) {
+    const bool tracer = (store.position()[i] - plane.point).dot(plane.normal) > 0.0;
+    store.tag()[i] = store.is_fluid(i) && tracer ? 1 : 0;
+  }
 }
 
 }  // namespace
@@ -83,6 +132,7 @@ Simulation build_simulation(const io::Case& the_case) {
     throw case_error(the_case, "fluid.regions", "the case generates no particles");
   }
   check_inside_domain(the_case, *simulation.store);
+  tag_tracer(the_case, *simulation.store);
   try {
     simulation.solver = std::make_unique<sph::WcsphSolver>(
         *simulation.store, the_case.domain, the_case.sph,

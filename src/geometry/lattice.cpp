@@ -87,4 +87,14 @@ std::vector<Vec3> wall_layers(const Shape& shape, double spacing, int layers,
   });
 }
 
+std::vector<Vec3> inside_layers(const Shape& shape, double spacing, int layers,
+                                const Domain& domain) {
+  const double thickness = layers * spacing;
+  const LatticeBox box = lattice_box(shape, spacing, 0.0, domain);
+  return sample(box, spacing, [&](const Vec3& x) {
+    const double distance = shape.signed_distance(x);
+    return distance <= 0.0 && distance > -thickness;
+  });
+}
+
 }  // namespace partimix::geometry

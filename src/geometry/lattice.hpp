@@ -26,4 +26,10 @@ std::vector<Vec3> fill(const Shape& shape, double spacing, const Domain& domain)
 std::vector<Vec3> wall_layers(const Shape& shape, double spacing, int layers,
                               const std::vector<Face>& open_faces, const Domain& domain);
 
+// The layers of a solid body (an impeller): points inside the shape within `layers` spacings of
+// its surface (signed distance in (-layers spacing, 0]), on the lattice of fill(). Unlike a
+// container, a body is not extended along periodic axes: it is the shape as given.
+std::vector<Vec3> inside_layers(const Shape& shape, double spacing, int layers,
+                                const Domain& domain);
+
 }  // namespace partimix::geometry

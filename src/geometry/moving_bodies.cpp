@@ -8,7 +8,8 @@ MovingBodies::MovingBodies(ParticleStore& store, const Domain& domain)
     : store_(store),
       domain_(domain),
       body_(store.add_integer("body", "").values),
-      start_position_(store.add_vector("start_position", "m", false).values) {
+      start_position_(store.add_vector("start_position", "m", false).values),
+      angular_velocity_(store.add_vector("angular_velocity", "rad/s", false).values) {
   std::fill(body_.begin(), body_.end(), -1);
 }
 
@@ -43,6 +44,7 @@ void MovingBodies::move_to(double time) {
     const RigidPose& pose = poses_[static_cast<std::size_t>(body_[i])];
     position[i] = pose.place(start_position_[i]);
     velocity[i] = pose.velocity_at(position[i]);
+    angular_velocity_[i] = pose.angular_velocity;
     domain_.wrap(position[i]);
   }
 }

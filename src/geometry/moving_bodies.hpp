@@ -2,7 +2,9 @@
 // The bodies of a run (docs/motions.md): each wall of the case is one body, made of wall
 // particles, with a prescribed motion. Every wall particle carries its body index (field
 // "body", -1 for fluid) and its position at t = 0 (field "start_position"), so that moving a
-// body is a closed-form placement at any time, with no drift from integrating velocities.
+// body is a closed-form placement at any time, with no drift from integrating velocities. Its
+// angular velocity (field "angular_velocity") lets wall treatments extend the body's rigid
+// velocity field into the fluid (docs/sph.md, "Walls").
 #include <memory>
 #include <vector>
 
@@ -14,7 +16,8 @@ namespace partimix::geometry {
 
 class MovingBodies {
  public:
-  // Adds the "body" and "start_position" fields to `store` (body -1 for all particles).
+  // Adds the "body", "start_position" and "angular_velocity" fields to `store` (body -1 for all
+  // particles).
   MovingBodies(ParticleStore& store, const Domain& domain);
 
   // Makes particles [first, store size) the particles of a new body with `motion`. Call after
@@ -26,7 +29,7 @@ class MovingBodies {
   const Motion& motion(std::size_t body) const { return *motions_[body]; }
 
   // Places every particle of a moving body where its motion puts it at `time`, with the rigid
-  // velocity there.
+  // velocity there and the body's angular velocity.
   void move_to(double time);
 
  private:
@@ -34,6 +37,7 @@ class MovingBodies {
   Domain domain_;
   std::vector<std::int32_t>& body_;
   std::vector<Vec3>& start_position_;
+  std::vector<Vec3>& angular_velocity_;
   std::vector<std::unique_ptr<Motion>> motions_;
   std::vector<bool> moving_;
   bool any_moving_ = false;

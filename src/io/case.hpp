@@ -2,11 +2,13 @@
 // A case: the typed, validated content of a case file (DESIGN.md, "One run"). Built by
 // load_case(); every key, unit and default is listed in docs/case-reference.md.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "analysis/sampling_cells.hpp"
 #include "core/vec.hpp"
 #include "geometry/lattice.hpp"
 #include "geometry/motion.hpp"
@@ -27,27 +29,44 @@ struct FluidRegion {
   std::shared_ptr<const geometry::Shape> shape;
 };
 
+// The tracer of the mixing analyses: the fluid on the side of a plane the normal points to, at
+// t = 0, gets tag 1 (the rest tag 0): (x - point) . normal > 0.
+struct TracerPlane {
+  Vec3 point = Vec3::Zero();
+  Vec3 normal = -Vec3::UnitY();  // the seed: the fluid at y < 0
+};
+
 struct FluidSpec {
   double density = 1000.0;       // rho0 [kg/m^3]
   sph::RheologyConfig rheology;  // from `viscosity` (newtonian) or the `rheology` map
   std::vector<FluidRegion> regions;
+  std::optional<TracerPlane> tracer;
 };
 
 struct WallSpec {
   std::shared_ptr<const geometry::Shape> shape;
   std::vector<geometry::Face> open_faces;
   geometry::MotionConfig motion;  // prescribed motion of this wall as a body
+  bool solid = false;  // true: layers inside the shape (an impeller), not outside (a container)
 };
 
 struct OutputSpec {
   bool frames = true;  // VTK frames every output_interval
 };
 
-// A measurement sampled into series.csv. front_position: the largest coordinate of any fluid
-// particle along `axis` (the surge front of a dam break).
+// A measurement sampled into series.csv (docs/case-reference.md, "analyses").
+// front_position: the largest coordinate of any fluid particle along `axis` (dam break).
+// body_loads, power_number: the load on wall `body` and its power and Reynolds numbers
+// (docs/power.md). mixing: uniformity and Lacey indices of the tracer (docs/mixing.md).
 struct AnalysisSpec {
   std::string type;
   int axis = 0;
+  int body = 0;
+  Vec3 vessel_axis_point = Vec3::Zero();
+  double average_revolutions = 1.0;
+  double diameter = 0.0;
+  double metzner_otto = 7.54;
+  analysis::MixingRegion mixing;
 };
 
 struct Case {

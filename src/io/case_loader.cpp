@@ -5,22 +5,18 @@
 
 #include <fmt/format.h>
 
+#include "io/analysis_section.hpp"
+#include "io/axis_names.hpp"
 #include "io/case.hpp"
 #include "io/overrides.hpp"
 #include "io/rheology_section.hpp"
+#include "io/shape_section.hpp"
 #include "io/yaml_reader.hpp"
 
 namespace partimix::io {
 namespace {
 
-using ShapePtr = std::shared_ptr<const geometry::Shape>;
-
 const std::vector<std::string> kKernels{"cubic_spline", "hyperbolic", "wendland_c2"};
-
-std::vector<std::string> axis_names(int dimensions) {
-  return dimensions == 2 ? std::vector<std::string>{"x", "y"}
-                         : std::vector<std::string>{"x", "y", "z"};
-}
 
 std::vector<std::string> face_names(int dimensions) {
   std::vector<std::string> names;
@@ -31,21 +27,8 @@ std::vector<std::string> face_names(int dimensions) {
   return names;
 }
 
-int axis_index(const std::string& name) {
-  return name.front() - 'x';
-}
-
 geometry::Face to_face(const std::string& name) {
   return {axis_index(name), name.back() == '+' ? 1 : -1};
-}
-
-void check_increasing(const Reader& reader, const Vec3& lo, const Vec3& hi, int dimensions) {
-  for (int axis = 0; axis < dimensions; ++axis) {
-    if (!(hi[axis] > lo[axis])) {
-      throw reader.error("max", fmt::format("must be > min on every axis; {}: max {} <= min {}",
-                                            axis_names(3)[axis], hi[axis], lo[axis]));
-    }
-  }
 }
 
 int read_dimensions(Reader& root) {
@@ -142,43 +125,29 @@ sph::Config read_sph(Reader& root) {
   return config;
 }
 
-ShapePtr read_box(Reader& item, int dimensions) {
-  Vec3 lo = item.vector("min", dimensions);
-  Vec3 hi = item.vector("max", dimensions);
-  check_increasing(item, lo, hi, dimensions);
-  if (dimensions == 2) {
-    lo.z() = -1.0;
-    hi.z() = 1.0;
-  }
-  return std::make_shared<geometry::Box>(lo, hi);
+std::optional<TracerPlane> read_tracer(Reader& fluid, int dimensions) {
+  if (!fluid.contains("tracer"))
+    return std::nullopt;
+  Reader section = fluid.map("tracer");
+  TracerPlane tracer;
+  tracer.point = section.vector("point", dimensions, tracer.point);
+  tracer.normal = section.vector("normal", dimensions, tracer.normal);
+  if (tracer.normal.norm() == 0.0)
+    throw section.error("normal", "the normal must not be the zero vector");
+  section.done();
+  return tracer;
 }
 
-ShapePtr read_cylinder(Reader& item, int dimensions) {
-  if (dimensions != 3) {
-    throw item.error("shape", fmt::format("cylinder needs dimensions: 3, this case has {}; "
-                                          "expected one of: box",
-                                          dimensions));
-  }
-  const Vec3 base_centre = item.vector("center", dimensions);
-  const double radius = item.required<double>("radius", kPositive);
-  const double height = item.required<double>("height", kPositive);
-  return std::make_shared<geometry::Cylinder>(base_centre, radius, height);
-}
-
-ShapePtr read_shape(Reader& item, int dimensions) {
-  const std::string shape = item.required_choice("shape", {"box", "cylinder"});
-  return shape == "cylinder" ? read_cylinder(item, dimensions) : read_box(item, dimensions);
-}
-
-FluidSpec read_fluid(Reader& root, int dimensions) {
+FluidSpec read_fluid(Reader& root, int dimensions, const std::filesystem::path& folder) {
   Reader section = root.map("fluid");
   FluidSpec fluid;
   fluid.density = section.required<double>("density", kPositive);
   fluid.rheology = read_fluid_rheology(section);
   for (Reader& region : section.list("regions")) {
-    fluid.regions.push_back({read_shape(region, dimensions)});
+    fluid.regions.push_back({read_shape(region, dimensions, folder)});
     region.done();
   }
+  fluid.tracer = read_tracer(section, dimensions);
   section.done();
   return fluid;
 }
@@ -211,13 +180,25 @@ geometry::MotionConfig read_motion(Reader& item, int dimensions) {
   return motion;
 }
 
-std::vector<WallSpec> read_walls(Reader& root, int dimensions) {
+// The faces of a container wall left open; a solid wall has none, so `open` is an error there.
+std::vector<geometry::Face> read_open_faces(Reader& item, int dimensions, bool solid) {
+  if (solid && item.contains("open")) {
+    throw item.error("open", "a solid wall (solid: true) has no open faces; remove 'open'");
+  }
+  std::vector<geometry::Face> faces;
+  for (const std::string& face : item.choices("open", face_names(dimensions))) {
+    faces.push_back(to_face(face));
+  }
+  return faces;
+}
+
+std::vector<WallSpec> read_walls(Reader& root, int dimensions,
+                                 const std::filesystem::path& folder) {
   std::vector<WallSpec> walls;
   for (Reader& item : root.optional_list("walls")) {
-    WallSpec wall{read_shape(item, dimensions), {}, {}};
-    for (const std::string& face : item.choices("open", face_names(dimensions))) {
-      wall.open_faces.push_back(to_face(face));
-    }
+    WallSpec wall{read_shape(item, dimensions, folder), {}, {}};
+    wall.solid = item.optional<bool>("solid", false);
+    wall.open_faces = read_open_faces(item, dimensions, wall.solid);
     wall.motion = read_motion(item, dimensions);
     item.done();
     walls.push_back(wall);
@@ -233,18 +214,6 @@ OutputSpec read_output(Reader& root) {
   return output;
 }
 
-std::vector<AnalysisSpec> read_analyses(Reader& root, int dimensions) {
-  std::vector<AnalysisSpec> analyses;
-  for (Reader& item : root.optional_list("analyses")) {
-    AnalysisSpec analysis;
-    analysis.type = item.required_choice("type", {"front_position"});
-    analysis.axis = axis_index(item.choice("axis", "x", axis_names(dimensions)));
-    item.done();
-    analyses.push_back(analysis);
-  }
-  return analyses;
-}
-
 Case read_case(Reader& root, const std::string& path) {
   Case result;
   result.file = path;
@@ -258,10 +227,11 @@ Case read_case(Reader& root, const std::string& path) {
   if (result.solver == "sph") {
     result.sph = read_sph(root);
   }
-  result.fluid = read_fluid(root, dimensions);
-  result.walls = read_walls(root, dimensions);
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  result.fluid = read_fluid(root, dimensions, folder);
+  result.walls = read_walls(root, dimensions, folder);
   result.output = read_output(root);
-  result.analyses = read_analyses(root, dimensions);
+  result.analyses = read_analyses(root, dimensions, result.walls, result.fluid);
   root.done();
   return result;
 }

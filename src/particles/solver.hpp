@@ -22,6 +22,11 @@ class Solver {
   // Numbers the solver derived from the case (smoothing length, sound speed, ...) for run.json
   // and `partimix check`, by name with the unit in brackets.
   virtual std::map<std::string, double> derived_parameters() const = 0;
+  // Fills the vector fields "body_force" and "body_couple" of the particles: the force on each
+  // body (wall) particle from the material around it [N] and its couple [N m], at the current
+  // state. Analyses of body loads call it before sampling; a solver without bodies leaves the
+  // fields absent.
+  virtual void update_body_forces() {}
 };
 
 }  // namespace partimix

@@ -7,6 +7,11 @@
 
 namespace partimix::sph {
 
+inline const std::vector<Vec3>* angular_velocity_of(const ParticleStore& store) {
+  const Field<Vec3>* field = store.find_vector("angular_velocity");
+  return field != nullptr ? &field->values : nullptr;
+}
+
 struct Fields {
   explicit Fields(ParticleStore& store)
       : kind(store.kind()),
@@ -19,7 +24,8 @@ struct Fields {
         acceleration(store.add_vector("acceleration", "m/s^2", false).values),
         wall_velocity(store.add_vector("wall_velocity", "m/s", false).values),
         viscosity(store.add_scalar("viscosity", "Pa s").values),
-        shear_rate(store.add_scalar("shear_rate", "1/s").values) {}
+        shear_rate(store.add_scalar("shear_rate", "1/s").values),
+        angular_velocity(angular_velocity_of(store)) {}
 
   std::vector<std::int32_t>& kind;
   std::vector<Vec3>& position;
@@ -32,6 +38,9 @@ struct Fields {
   std::vector<Vec3>& wall_velocity;  // wall particles: the no-slip ghost velocity (Adami 2012)
   std::vector<double>& viscosity;    // apparent viscosity eta_a of fluid particles
   std::vector<double>& shear_rate;   // gamma_dot of fluid particles
+  // Wall particles of moving bodies: the body's angular velocity (geometry/moving_bodies.hpp);
+  // null when the store has no bodies.
+  const std::vector<Vec3>* angular_velocity;
   // Viscous stress tau = 2 eta_a S of every particle, for the stress-form viscous operator only
   // (empty otherwise). Recomputed at every interaction, so it is not part of the store.
   std::vector<Mat3> viscous_stress;

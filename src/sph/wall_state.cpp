@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstddef>
 
+#include <Eigen/Geometry>
+
 namespace partimix::sph {
 
 void update_wall_state(Fields& f, std::size_t fluid_count, const CellGrid& grid,
@@ -18,20 +20,26 @@ void update_wall_state(Fields& f, std::size_t fluid_count, const CellGrid& grid,
     double pressure = 0.0;
     Vec3 density_moment = Vec3::Zero();
     Vec3 velocity = Vec3::Zero();
+    Vec3 offset = Vec3::Zero();
     auto gather = [&](std::size_t j, const Vec3& r_wj, double r2) {
       const double W = kernel.value(std::sqrt(r2));
       weight += W;
       pressure += f.pressure[j] * W;
       density_moment += (f.density[j] * W) * r_wj;
       velocity += W * f.velocity[j];
+      offset -= W * r_wj;
     };
     grid.for_each_neighbour(w, f.position, gather, fluid_count);
     if (weight > 0.0) {
       // Adami et al. (2012), eq. 27, for a wall at rest in the frame of gravity.
       f.pressure[w] = std::max(0.0, (pressure + parameters.gravity.dot(density_moment)) / weight);
       f.density[w] = eos.density(f.pressure[w]);
-      // Adami et al. (2012), eqs. 22-23.
+      // Adami et al. (2012), eqs. 22-23, for the velocity relative to the body's rigid motion
+      // (docs/sph.md, "Walls"): the rigid velocity at the fluid's mean position adds
+      // omega x (x_mean - x_w).
       f.wall_velocity[w] = 2.0 * f.velocity[w] - velocity / weight;
+      if (f.angular_velocity != nullptr)
+        f.wall_velocity[w] += (*f.angular_velocity)[w].cross(offset / weight);
     } else {
       f.pressure[w] = 0.0;
       f.density[w] = parameters.reference_density;

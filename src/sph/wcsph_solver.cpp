@@ -12,6 +12,7 @@
 #include "sph/shepard_filter.hpp"
 #include "sph/sound_speed.hpp"
 #include "sph/viscous_stress.hpp"
+#include "sph/wall_forces.hpp"
 #include "sph/wall_state.hpp"
 
 namespace partimix::sph {
@@ -108,12 +109,34 @@ WcsphSolver::WcsphSolver(ParticleStore& store, const Domain& domain, const Confi
   }
   if (parameters_.viscous_operator == ViscousOperator::stress)
     fields_.viscous_stress.resize(store_.size(), Mat3::Zero());
+  if (bodies_ != nullptr && bodies_->count() > 0) {
+    body_force_ = &store_.add_vector("body_force", "N", false).values;
+    body_couple_ = &store_.add_vector("body_couple", "N m", false).values;
+  }
   initialise_fluid();
   fluid_count_ = static_cast<std::size_t>(std::count_if(
       fields_.kind.begin(), fields_.kind.end(), [](std::int32_t k) { return is_fluid(k); }));
   move_bodies(0.0);
   sort_by_cell();
   interact();
+}
+
+// The grid and the rate-evaluation state are those of the end of the last step (or of the
+// constructor), so the forces belong to the current positions. The traction on a wall is
+// tau . n with tau = eta (G + G^T); the Morris term carries only the eta G part to the walls, so
+// with it the eta G^T part is computed here and added as in the stress form (docs/power.md).
+void WcsphSolver::update_body_forces() {
+  if (body_force_ == nullptr)
+    return;
+  Parameters traction = parameters_;
+  if (parameters_.viscous_operator == ViscousOperator::morris) {
+    fields_.viscous_stress.resize(store_.size());
+    compute_viscous_stress(fields_, fluid_count_, grid_, gradient_table_, kernel_table_, rheology_,
+                           domain_.dimensions, config_.corrected_velocity_gradient);
+    traction.viscous_operator = ViscousOperator::stress;
+  }
+  compute_wall_forces(fields_, fluid_count_, grid_, gradient_table_, traction,
+                      {*body_force_, *body_couple_});
 }
 
 void WcsphSolver::initialise_fluid() {

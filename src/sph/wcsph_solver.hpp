@@ -41,6 +41,7 @@ class WcsphSolver final : public Solver {
   double stable_dt() const override;
   void step(double dt) override;
   std::map<std::string, double> derived_parameters() const override;
+  void update_body_forces() override;
 
   const Parameters& parameters() const { return parameters_; }
 
@@ -81,6 +82,8 @@ class WcsphSolver final : public Solver {
   std::vector<Vec3> start_velocity_;
   std::vector<double> start_density_;
   std::vector<double> scratch_;
+  std::vector<Vec3>* body_force_ = nullptr;  // store fields, when there are bodies
+  std::vector<Vec3>* body_couple_ = nullptr;
 };
 
 }  // namespace partimix::sph

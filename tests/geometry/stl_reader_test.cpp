@@ -4,12 +4,9 @@
 // the file and, for ASCII, the line.
 #include <gtest/gtest.h>
 
-#include <bit>
 #include <cctype>
-#include <cstdint>
 #include <fstream>
 #include <limits>
-#include <sstream>
 #include <string>
 
 #include "core/error.hpp"
@@ -17,11 +14,14 @@
 #include "geometry/stl_reader.hpp"
 #include "geometry/triangle_mesh.hpp"
 #include "support/box_mesh.hpp"
+#include "support/stl_files.hpp"
 #include "support/temp_dir.hpp"
 
 namespace partimix::geometry {
 namespace {
 
+using test_support::ascii_stl;
+using test_support::binary_stl;
 using test_support::box_triangles;
 
 using test_support::TempDir;
@@ -29,49 +29,6 @@ using test_support::TempDir;
 TriangleSoup tetrahedron() {
   const Vec3 o(0.0, 0.0, 0.0), x(1.0, 0.0, 0.0), y(0.0, 1.0, 0.0), z(0.0, 0.0, 1.0);
   return {{{o, y, x}}, {{o, x, z}}, {{o, z, y}}, {{x, y, z}}};
-}
-
-std::string ascii_stl(const TriangleSoup& triangles, const std::string& name) {
-  std::ostringstream out;
-  out.precision(17);
-  out << "solid " << name << "\n";
-  for (const Triangle& t : triangles) {
-    out << "  facet normal 0 0 0\n    outer loop\n";
-    for (const Vec3& c : t.corner) {
-      out << "      vertex " << c.x() << " " << c.y() << " " << c.z() << "\n";
-    }
-    out << "    endloop\n  endfacet\n";
-  }
-  out << "endsolid " << name << "\n";
-  return out.str();
-}
-
-void append_u32(std::string& bytes, std::uint32_t value) {
-  for (int shift = 0; shift < 32; shift += 8) {
-    bytes.push_back(static_cast<char>((value >> shift) & 0xFFu));
-  }
-}
-
-void append_float(std::string& bytes, double value) {
-  append_u32(bytes, std::bit_cast<std::uint32_t>(static_cast<float>(value)));
-}
-
-std::string binary_stl(const TriangleSoup& triangles, const std::string& header) {
-  std::string bytes = header;
-  bytes.resize(80, ' ');
-  append_u32(bytes, static_cast<std::uint32_t>(triangles.size()));
-  for (const Triangle& t : triangles) {
-    for (int i = 0; i < 3; ++i) {
-      append_float(bytes, 0.0);
-    }
-    for (const Vec3& c : t.corner) {
-      for (int axis = 0; axis < 3; ++axis) {
-        append_float(bytes, c[axis]);
-      }
-    }
-    bytes.append(2, '\0');
-  }
-  return bytes;
 }
 
 std::string write(const TempDir& dir, const std::string& name, const std::string& bytes) {

@@ -86,6 +86,12 @@ class CaseFile {
 
   std::string path() const { return (folder_ / "case.yaml").string(); }
 
+  // Writes `bytes` to the file `name` beside the case file (a mesh the case names); its path.
+  std::string add_file(const std::string& name, const std::string& bytes) const {
+    std::ofstream(folder_ / name, std::ios::binary) << bytes;
+    return (folder_ / name).string();
+  }
+
  private:
   test_support::TempDir folder_;
 };
@@ -95,10 +101,8 @@ inline io::Case load_text(const std::string& text, const std::vector<std::string
   return io::load_case(file.path(), overrides);
 }
 
-// The InputError that loading `text` throws; a test failure when none is thrown.
-inline InputError load_error(const std::string& text,
-                             const std::vector<std::string>& overrides = {}) {
-  const CaseFile file(text);
+// The InputError that loading `file` throws; a test failure when none is thrown.
+inline InputError load_error(const CaseFile& file, const std::vector<std::string>& overrides = {}) {
   try {
     io::load_case(file.path(), overrides);
   } catch (const InputError& error) {
@@ -106,6 +110,11 @@ inline InputError load_error(const std::string& text,
   }
   ADD_FAILURE() << "expected an InputError";
   return InputError({}, "");
+}
+
+inline InputError load_error(const std::string& text,
+                             const std::vector<std::string>& overrides = {}) {
+  return load_error(CaseFile(text), overrides);
 }
 
 // Checks the location of `error`; file "case.yaml" stands for the test's case file.

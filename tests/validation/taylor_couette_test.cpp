@@ -1,6 +1,6 @@
-// Circular Couette flow of a power-law fluid in 2D: the inner cylinder (radius R1) turns at
-// Omega, the outer (R2) is at rest, no gravity. At steady state the torque balance gives the
-// shear stress tau_r_theta = C / r^2, so the shear rate gamma_dot = -r d(omega)/dr = (C / (K
+// Circular Couette flow of a power-law or Newtonian fluid in 2D: the inner cylinder (radius R1)
+// turns at Omega, the outer (R2) is at rest, no gravity. At steady state the torque balance gives
+// the shear stress tau_r_theta = C / r^2, so the shear rate gamma_dot = -r d(omega)/dr = (C / (K
 // r^2))^(1/n) varies across the gap and, for n != 1, so does the viscosity. Integrating with
 // omega(R1) = Omega and omega(R2) = 0 (Bird, Armstrong and Hassager 1987, example 4.2-5):
 //   omega(r) = Omega (r^(-2/n) - R2^(-2/n)) / (R1^(-2/n) - R2^(-2/n))
@@ -12,15 +12,22 @@
 // turn with it. Fluid: the seed's CMC (K = 13.9 Pa s^n, n = 0.47); R1 = 5 mm, R2 = 10 mm, Omega = 2
 // rad/s, gap / dp = 10 on concentric rings (a polar lattice, so that both walls are smooth); steady
 // after 0.01 s (gap / dp = 10: L2 and stress unchanged to 1e-4 when run to 0.02 s).
-// Tolerances: L2 deviation of v_theta within 2% of Omega R1 (measured 1.36%, 0.96% at gap / dp
-// = 10, 14), and the mean of eta_a gamma_dot r^2 over particles more than 2h from both walls
-// within 3% of C (measured -0.02%, -0.48%). The Morris form alone stays at 3.6-3.9% L2 and
-// +7.2-7.4% stress at gap / dp = 10, 14, 20; the test checks it is at least twice as far off.
+// The walls' no-slip ghost velocities follow the rigid rotation (docs/sph.md, "Walls").
+// Torque per unit length of the fluid on the cylinders (docs/power.md): -2 pi C on the inner,
+// +2 pi C on the outer; Newtonian (n = 1, K = mu): 2 pi C = 4 pi mu Omega R1^2 R2^2 / (R2^2 -
+// R1^2). Tolerances, power law with the stress form: L2 deviation of v_theta within 2% of Omega R1
+// (measured 0.76%), the mean of eta_a gamma_dot r^2 over particles more than 2h from both walls
+// within 3% of C (+2.5%), torques within 5% (inner +0.09%, outer -0.60%). The Morris form alone
+// is at 5.2% L2; the test checks it is at least twice as far off. Newtonian, mu = 10 Pa s:
+// stress form L2 < 2% (0.75%), torques within 4% (-2.2%, -2.8%); Morris L2 < 1% (0.29%), outer
+// torque within 3% (+0.85%), inner within 8% (-7.1%): the inner error is first order in dp / R1
+// (-3.9% at gap / dp = 20, outer -0.3%), from the wall's curvature at R1 / dp = 10.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
+#include "analysis/body_load.hpp"
 #include "sph/wcsph_solver.hpp"
 
 namespace partimix {
@@ -29,25 +36,27 @@ namespace {
 constexpr double kInner = 0.005;
 constexpr double kOuter = 0.01;
 constexpr double kOmega = 2.0;
-constexpr double kConsistency = 13.9;
-constexpr double kIndex = 0.47;
 constexpr int kRings = 10;
 constexpr double kSpacing = (kOuter - kInner) / kRings;
 
-double power_of_radius(double r) {
-  return std::pow(r, -2.0 / kIndex);
-}
+// A power-law fluid tau = K gamma_dot^n; n = 1 is Newtonian with mu = K.
+struct Fluid {
+  double consistency = 13.9;  // the seed's CMC
+  double index = 0.47;
 
-double exact_angular_velocity(double r) {
-  return kOmega * (power_of_radius(r) - power_of_radius(kOuter)) /
-         (power_of_radius(kInner) - power_of_radius(kOuter));
-}
+  double power_of_radius(double r) const { return std::pow(r, -2.0 / index); }
 
-double exact_stress_constant() {
-  return kConsistency *
-         std::pow(2.0 * kOmega / (kIndex * (power_of_radius(kInner) - power_of_radius(kOuter))),
-                  kIndex);
-}
+  double exact_angular_velocity(double r) const {
+    return kOmega * (power_of_radius(r) - power_of_radius(kOuter)) /
+           (power_of_radius(kInner) - power_of_radius(kOuter));
+  }
+
+  double exact_stress_constant() const {
+    return consistency *
+           std::pow(2.0 * kOmega / (index * (power_of_radius(kInner) - power_of_radius(kOuter))),
+                    index);
+  }
+};
 
 // `count` rings of particles spaced kSpacing, the first at radius `first`, going outward
 // (step +1) or inward (step -1); each ring holds round(2 pi r / dp) particles.
@@ -68,11 +77,20 @@ void add_rings(ParticleStore& store, double first, int count, int step, Particle
 }
 
 struct Measured {
-  double l2 = 0.0;            // of v_theta, relative to Omega R1
-  double stress_error = 0.0;  // mean eta gamma_dot r^2 away from the walls, relative to C
+  double l2 = 0.0;                  // of v_theta, relative to Omega R1
+  double stress_error = 0.0;        // mean eta gamma_dot r^2 away from the walls, relative to C
+  double inner_torque_error = 0.0;  // torque of the fluid on the inner cylinder vs -2 pi C
+  double outer_torque_error = 0.0;  // on the outer cylinder vs +2 pi C
 };
 
-Measured run(const std::string& viscous_operator) {
+// Torque per unit length about the axis of the fluid on body `body`, relative to `exact`.
+double torque_error(const ParticleStore& store, int body, double exact) {
+  const analysis::BodyLoad load =
+      analysis::measure_body_load(store, body, Vec3::Zero(), Vec3::Zero());
+  return load.torque_own.z() / exact - 1.0;
+}
+
+Measured run(const Fluid& fluid_model, const std::string& viscous_operator) {
   ParticleStore store;
   add_rings(store, kInner + 0.5 * kSpacing, kRings, 1, ParticleKind::fluid);
   Domain domain;
@@ -95,10 +113,14 @@ Measured run(const std::string& viscous_operator) {
   config.viscous_operator = viscous_operator;
   sph::FluidProperties fluid;
   fluid.rheology.model = "power_law";
-  fluid.rheology.consistency = kConsistency;
-  fluid.rheology.flow_index = kIndex;
+  fluid.rheology.consistency = fluid_model.consistency;
+  fluid.rheology.flow_index = fluid_model.index;
   fluid.rheology.viscosity_min = 0.1;
   fluid.rheology.viscosity_max = 1000.0;
+  if (fluid_model.index == 1.0) {
+    fluid.rheology = {};
+    fluid.rheology.viscosity = fluid_model.consistency;
+  }
   sph::WcsphSolver solver(store, domain, config, fluid, Vec3::Zero(), &bodies);
   const double end_time = 0.01;
   for (double t = 0.0; t < end_time;) {
@@ -118,7 +140,8 @@ Measured run(const std::string& viscous_operator) {
     const Vec3& x = store.position()[i];
     const double r = x.norm();
     const Vec3 tangent(-x.y() / r, x.x() / r, 0.0);
-    const double error = store.velocity()[i].dot(tangent) - r * exact_angular_velocity(r);
+    const double error =
+        store.velocity()[i].dot(tangent) - r * fluid_model.exact_angular_velocity(r);
     m.l2 += error * error;
     ++count;
     if (r > kInner + reach && r < kOuter - reach) {
@@ -126,19 +149,41 @@ Measured run(const std::string& viscous_operator) {
       ++interior;
     }
   }
+  const double constant = fluid_model.exact_stress_constant();
   m.l2 = std::sqrt(m.l2 / count) / (kOmega * kInner);
-  m.stress_error = m.stress_error / interior / exact_stress_constant() - 1.0;
-  std::printf("Taylor-Couette (%s): L2 of v_theta %.4f of Omega R1, stress constant %+.4f\n",
-              viscous_operator.c_str(), m.l2, m.stress_error);
+  m.stress_error = m.stress_error / interior / constant - 1.0;
+  solver.update_body_forces();
+  const double torque = 2.0 * std::numbers::pi * constant;
+  m.inner_torque_error = torque_error(store, 0, -torque);
+  m.outer_torque_error = torque_error(store, 1, torque);
+  std::printf(
+      "Taylor-Couette (n = %.2f, %s): L2 of v_theta %.4f of Omega R1, stress constant %+.4f, "
+      "torque inner %+.4f outer %+.4f\n",
+      fluid_model.index, viscous_operator.c_str(), m.l2, m.stress_error, m.inner_torque_error,
+      m.outer_torque_error);
   return m;
 }
 
-TEST(TaylorCouette, PowerLawProfileAndStressWithTheStressForm) {
-  const Measured stress_form = run("stress");
+TEST(TaylorCouette, PowerLawProfileStressAndTorqueWithTheStressForm) {
+  const Measured stress_form = run(Fluid{}, "stress");
   EXPECT_LT(stress_form.l2, 0.02);
   EXPECT_NEAR(stress_form.stress_error, 0.0, 0.03);
-  const Measured morris = run("morris");
+  EXPECT_NEAR(stress_form.inner_torque_error, 0.0, 0.05);
+  EXPECT_NEAR(stress_form.outer_torque_error, 0.0, 0.05);
+  const Measured morris = run(Fluid{}, "morris");
   EXPECT_GT(morris.l2, 2.0 * stress_form.l2) << "the transposed part should matter here";
+}
+
+TEST(TaylorCouette, NewtonianTorqueOnBothCylinders) {
+  const Fluid newtonian{10.0, 1.0};
+  const Measured stress_form = run(newtonian, "stress");
+  EXPECT_LT(stress_form.l2, 0.02);
+  EXPECT_NEAR(stress_form.inner_torque_error, 0.0, 0.04);
+  EXPECT_NEAR(stress_form.outer_torque_error, 0.0, 0.04);
+  const Measured morris = run(newtonian, "morris");
+  EXPECT_LT(morris.l2, 0.01);
+  EXPECT_NEAR(morris.inner_torque_error, 0.0, 0.08);
+  EXPECT_NEAR(morris.outer_torque_error, 0.0, 0.03);
 }
 
 }  // namespace

@@ -1,0 +1,59 @@
+#include "analysis/body_loads.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "analysis/body_load.hpp"
+
+namespace partimix::analysis {
+namespace {
+
+const char* const kNames[] = {"force_x",       "force_y", "force_z",       "torque_own",
+                              "torque_vessel", "power",   "power_rotation"};
+const char* const kUnits[] = {"N", "N", "N", "N m", "N m", "W", "W"};
+
+std::vector<std::string> column_names(const std::string& prefix) {
+  std::vector<std::string> names;
+  for (const char* name : kNames)
+    names.push_back(prefix + name);
+  return names;
+}
+
+}  // namespace
+
+BodyLoads::BodyLoads(const BodyOptions& body)
+    : body_(body), history_(column_names(fmt::format("body{}_", body.index))) {}
+
+std::string BodyLoads::prefix() const {
+  return fmt::format("body{}_", body_.index);
+}
+
+std::vector<Column> BodyLoads::columns() const {
+  std::vector<Column> result;
+  for (std::size_t k = 0; k < std::size(kNames); ++k)
+    result.push_back({prefix() + kNames[k], kUnits[k]});
+  return result;
+}
+
+void BodyLoads::sample(const ParticleStore& particles, double time, std::span<double> values) {
+  const geometry::RigidPose pose = body_.motion->pose(time);
+  const Vec3& axis = body_.motion_config.axis;
+  const BodyLoad load = measure_body_load(
+      particles, body_.index, pose.place(body_.motion_config.axis_point), body_.vessel_axis_point);
+  values[0] = load.force.x();
+  values[1] = load.force.y();
+  values[2] = load.force.z();
+  values[3] = axis.dot(load.torque_own);
+  values[4] = axis.dot(load.torque_vessel);
+  values[5] = load.power;
+  values[6] = std::abs(pose.angular_velocity.dot(load.torque_own));
+  history_.add(time, values);
+}
+
+void BodyLoads::add_figures(std::map<std::string, double>& figures) const {
+  history_.add_figures(figures, prefix(), revolution_period(body_.motion_config),
+                       body_.average_revolutions);
+}
+
+}  // namespace partimix::analysis

@@ -1,0 +1,29 @@
+#pragma once
+// Mixing of a tracer in the fluid (docs/mixing.md): the uniformity index xi (seed eq. 28) and
+// the Lacey index M over sampling cells, each sample. Tracer particles carry tag 1, the rest of
+// the mixture tag 0; wall particles are not counted. The summary gives the last values.
+#include <memory>
+
+#include "analysis/analysis.hpp"
+#include "analysis/mixing_index.hpp"
+#include "analysis/sampling_cells.hpp"
+
+namespace partimix::analysis {
+
+class Mixing final : public Analysis {
+ public:
+  explicit Mixing(const MixingRegion& region);
+  std::vector<Column> columns() const override { return {{"xi", ""}, {"lacey", ""}}; }
+  void sample(const ParticleStore& particles, double time, std::span<double> values) override;
+  void add_figures(std::map<std::string, double>& figures) const override;
+
+ private:
+  std::unique_ptr<SamplingCells> cells_;
+  int min_count_;
+  CellCounts counts_;
+  std::vector<MixingRole> roles_;
+  double last_xi_ = LaceyResult::nan;
+  double last_lacey_ = LaceyResult::nan;
+};
+
+}  // namespace partimix::analysis

@@ -1,0 +1,51 @@
+#include "analysis/time_average.hpp"
+
+#include <algorithm>
+
+namespace partimix::analysis {
+
+void SampledSignal::add(double time, double value) {
+  times_.push_back(time);
+  values_.push_back(value);
+}
+
+double SampledSignal::mean(double from, double to) const {
+  from = std::max(from, times_.front());
+  to = std::min(to, times_.back());
+  double integral = 0.0;
+  for (std::size_t k = 1; k < times_.size(); ++k) {
+    const double t0 = times_[k - 1];
+    const double t1 = times_[k];
+    const double a = std::max(t0, from);
+    const double b = std::min(t1, to);
+    if (!(b > a) || !(t1 > t0))
+      continue;
+    const auto value_at = [&](double t) {
+      return values_[k - 1] + (values_[k] - values_[k - 1]) * (t - t0) / (t1 - t0);
+    };
+    integral += 0.5 * (value_at(a) + value_at(b)) * (b - a);
+  }
+  if (!(to > from))
+    return values_.back();
+  return integral / (to - from);
+}
+
+void ColumnHistory::add(double time, std::span<const double> values) {
+  for (std::size_t k = 0; k < signals_.size(); ++k)
+    signals_[k].add(time, values[k]);
+}
+
+void ColumnHistory::add_figures(std::map<std::string, double>& figures, const std::string& prefix,
+                                double period, double revolutions) const {
+  if (signals_.empty() || signals_.front().empty())
+    return;
+  const AveragingWindow window = averaging_window(
+      signals_.front().first_time(), signals_.front().last_time(), period, revolutions);
+  for (std::size_t k = 0; k < signals_.size(); ++k)
+    figures[names_[k]] = signals_[k].mean(window.from, window.to);
+  figures[prefix + "average_from"] = window.from;
+  figures[prefix + "average_to"] = window.to;
+  figures[prefix + "average_revolutions"] = window.revolutions;
+}
+
+}  // namespace partimix::analysis

@@ -1,0 +1,115 @@
+#include "io/shape_section.hpp"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+#include "geometry/triangle_mesh.hpp"
+
+namespace partimix::io {
+namespace {
+
+using ShapePtr = std::shared_ptr<const geometry::Shape>;
+
+// In 2D every shape spans z in [-1, 1] m, so that the x-y plane lies inside it.
+constexpr double kPlaneHalfThickness = 1.0;
+
+void require_3d(const Reader& item, const std::string& shape, int dimensions) {
+  if (dimensions != 3) {
+    throw item.error("shape", fmt::format("{} needs dimensions: 3, this case has {}; "
+                                          "expected one of: box, plate",
+                                          shape, dimensions));
+  }
+}
+
+ShapePtr read_box(Reader& item, int dimensions) {
+  Vec3 lo = item.vector("min", dimensions);
+  Vec3 hi = item.vector("max", dimensions);
+  check_increasing(item, lo, hi, dimensions);
+  if (dimensions == 2) {
+    lo.z() = -kPlaneHalfThickness;
+    hi.z() = kPlaneHalfThickness;
+  }
+  return std::make_shared<geometry::Box>(lo, hi);
+}
+
+ShapePtr read_cylinder(Reader& item, int dimensions) {
+  require_3d(item, "cylinder", dimensions);
+  const Vec3 base_centre = item.vector("center", dimensions);
+  const double radius = item.required<double>("radius", kPositive);
+  const double height = item.required<double>("height", kPositive);
+  return std::make_shared<geometry::Cylinder>(base_centre, radius, height);
+}
+
+// The z-range of a plate: in 3D from `clearance` above the floor at `bottom` up by `height`; in
+// 2D the plane's range, and the 3D keys are errors.
+std::pair<double, double> plate_z_range(Reader& item, int dimensions) {
+  if (dimensions == 2) {
+    for (const std::string key : {"height", "bottom", "clearance"}) {
+      if (item.contains(key))
+        throw item.error(key, "applies to a plate in 3D only (dimensions is 2)");
+    }
+    return {-kPlaneHalfThickness, kPlaneHalfThickness};
+  }
+  const double height = item.required<double>("height", kPositive);
+  const double bottom = item.optional<double>("bottom", 0.0);
+  const double clearance = item.optional<double>("clearance", 0.0, kNonNegative);
+  return {bottom + clearance, bottom + clearance + height};
+}
+
+// A flat-plate impeller (the seed's section 2.1): `length` along x and `width` along y about
+// `centre`, a point of the horizontal plane.
+ShapePtr read_plate(Reader& item, int dimensions) {
+  const Vec3 centre = item.vector("centre", 2);
+  const double length = item.required<double>("length", kPositive);
+  const double width = item.required<double>("width", kPositive);
+  const auto [z_lo, z_hi] = plate_z_range(item, dimensions);
+  const Vec3 half(0.5 * length, 0.5 * width, 0.0);
+  Vec3 lo = centre - half;
+  Vec3 hi = centre + half;
+  lo.z() = z_lo;
+  hi.z() = z_hi;
+  return std::make_shared<geometry::Box>(lo, hi);
+}
+
+// A closed triangle mesh from an STL file (docs/geometry-meshes.md), scaled, then moved by
+// `offset`.
+ShapePtr read_mesh(Reader& item, int dimensions, const std::filesystem::path& case_folder) {
+  require_3d(item, "mesh", dimensions);
+  const std::string file = item.required<std::string>("file");
+  const double scale = item.optional<double>("scale", 1.0, kPositive);
+  const Vec3 offset = item.vector("offset", 3, Vec3::Zero());
+  try {
+    return std::make_shared<geometry::TriangleMesh>(
+        geometry::read_triangle_mesh((case_folder / file).string(), scale, offset));
+  } catch (const InputError& error) {
+    throw item.error("file", fmt::format("cannot use the mesh: {}", error.what()));
+  }
+}
+
+}  // namespace
+
+ShapePtr read_shape(Reader& item, int dimensions, const std::filesystem::path& case_folder) {
+  const std::string shape = item.required_choice("shape", {"box", "cylinder", "plate", "mesh"});
+  if (shape == "cylinder")
+    return read_cylinder(item, dimensions);
+  if (shape == "plate")
+    return read_plate(item, dimensions);
+  if (shape == "mesh")
+    return read_mesh(item, dimensions, case_folder);
+  return read_box(item, dimensions);
+}
+
+void check_increasing(const Reader& reader, const Vec3& lo, const Vec3& hi, int dimensions) {
+  for (int axis = 0; axis < dimensions; ++axis) {
+    if (!(hi[axis] > lo[axis])) {
+      throw reader.error("max", fmt::format("must be > min on every axis; {}: max {} <= min {}",
+                                            "xyz"[axis], hi[axis], lo[axis]));
+    }
+  }
+}
+
+}  // namespace partimix::io

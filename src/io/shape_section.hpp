@@ -1,0 +1,23 @@
+#pragma once
+// The shapes of a case file (docs/case-reference.md, "Shapes"): the items of `fluid.regions` and
+// `walls`, chosen by `shape` (box, cylinder, plate, mesh), each read with its own keys.
+#include <filesystem>
+#include <memory>
+
+#include "core/vec.hpp"
+#include "geometry/shape.hpp"
+#include "io/yaml_reader.hpp"
+
+namespace partimix::io {
+
+// The shape described by `item`. A mesh file is found relative to `case_folder`, the folder
+// of the case file, unless its path is absolute; any problem with the mesh is an InputError
+// about the item's `file` key that quotes the mesh's own error.
+std::shared_ptr<const geometry::Shape> read_shape(Reader& item, int dimensions,
+                                                  const std::filesystem::path& case_folder);
+
+// Checks that `hi` exceeds `lo` on each of the first `dimensions` axes (a box, the domain); the
+// error is about the key `max`.
+void check_increasing(const Reader& reader, const Vec3& lo, const Vec3& hi, int dimensions);
+
+}  // namespace partimix::io

@@ -1,0 +1,29 @@
+#pragma once
+// The force of the fluid on every wall particle (docs/power.md; the seed's eq. 23): the
+// reaction to the pair terms that wall particle j exerts on its fluid neighbours,
+// f_j = -sum_i m_i a_(i<-j), so that the loads on a body balance the momentum its particles
+// give the fluid. Each pair force acts at the midpoint of the pair, where the wall surface lies
+// between the first fluid and wall layers; a wall particle's couple
+// c_j = sum_i (x_i - x_j) / 2 x f_ij makes its moment about any point o (x_j - o) x f_j + c_j.
+#include <vector>
+
+#include "particles/cell_grid.hpp"
+#include "sph/fields.hpp"
+#include "sph/kernel_table.hpp"
+#include "sph/parameters.hpp"
+
+namespace partimix::sph {
+
+struct WallLoads {
+  std::vector<Vec3>& force;   // f_j [N]
+  std::vector<Vec3>& couple;  // c_j [N m]
+};
+
+// Needs the state of one rate evaluation (pressures, wall state, viscosities and, stress form,
+// viscous stresses). Fluid particles are [0, fluid_count) of the fields; `loads` get one entry
+// per particle, zero for fluid particles.
+void compute_wall_forces(const Fields& fields, std::size_t fluid_count, const CellGrid& grid,
+                         const KernelTable& gradient_kernel, const Parameters& parameters,
+                         WallLoads loads);
+
+}  // namespace partimix::sph

@@ -1,0 +1,79 @@
+// tools/plot_sweep.py on a hand-written sweep.csv: the log-log fit of Np on Re, its plot, bad
+// input, and the sweep's call of it.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "app/child_process.hpp"
+#include "app/sweep_plot.hpp"
+#include "support/temp_dir.hpp"
+
+namespace partimix::app {
+namespace {
+
+using test_support::read_file;
+using test_support::TempDir;
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
+
+struct ScriptOutcome {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr
+};
+
+ScriptOutcome plot_sweep(const TempDir& dir, const std::vector<std::string>& options = {}) {
+  std::vector<std::string> argv{"/usr/bin/python3",
+                                std::string(PARTIMIX_SOURCE_DIR) + "/tools/plot_sweep.py",
+                                dir.path().string()};
+  argv.insert(argv.end(), options.begin(), options.end());
+  const int code = wait_process(start_process(argv, dir / "log.txt"));
+  return {code, read_file(dir / "log.txt")};
+}
+
+// Np = 40 / Re at four Reynolds numbers, plus a failed run without figures.
+void write_laminar_sweep(const TempDir& dir) {
+  std::ofstream csv(dir / "sweep.csv");
+  csv << "run,fluid.viscosity,status,Np,Re\n";
+  const double reynolds[] = {0.5, 1.0, 5.0, 10.0};
+  for (int i = 0; i < 4; ++i)
+    csv << "run_00" << i << ",1,"
+        << "completed," << 40.0 / reynolds[i] << "," << reynolds[i] << "\n";
+  csv << "run_004,2,failed,,\n";
+}
+
+TEST(PlotSweepScript, FitsSlopeMinusOneToNpOver40Re) {
+  const TempDir dir;
+  write_laminar_sweep(dir);
+  const ScriptOutcome outcome = plot_sweep(dir);
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.output;
+  std::smatch slope;
+  ASSERT_TRUE(std::regex_search(outcome.output, slope, std::regex("slope = (\\S+)")))
+      << outcome.output;
+  EXPECT_NEAR(std::stod(slope[1].str()), -1.0, 1e-6);
+  EXPECT_THAT(read_file(dir / "np_re.png"), StartsWith("\x89PNG"));
+}
+
+TEST(PlotSweepScript, IsWhatTheSweepRunsForTheNpRePlot) {
+  const TempDir dir;
+  write_laminar_sweep(dir);
+  EXPECT_EQ(plot_np_re(dir.path()), 0);
+  EXPECT_THAT(read_file(dir / "np_re.png"), StartsWith("\x89PNG"));
+}
+
+TEST(PlotSweepScript, MissingColumnOrFileIsBadInput) {
+  const TempDir dir;
+  const ScriptOutcome no_file = plot_sweep(dir);
+  EXPECT_EQ(no_file.exit_code, 2);
+  EXPECT_THAT(no_file.output, HasSubstr("sweep.csv does not exist"));
+  write_laminar_sweep(dir);
+  const ScriptOutcome no_column = plot_sweep(dir, {"--x", "Fr"});
+  EXPECT_EQ(no_column.exit_code, 2);
+  EXPECT_THAT(no_column.output, HasSubstr("no column 'Fr'"));
+}
+
+}  // namespace
+}  // namespace partimix::app
