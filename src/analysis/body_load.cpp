@@ -23,7 +23,6 @@ BodyLoad measure_body_load(const ParticleStore& particles, int body, const Vec3&
     const Vec3& c = couples->values[j];
     load.torque_own += (x - own_axis_point).cross(f) + c;
     load.torque_vessel += (x - vessel_axis_point).cross(f) + c;
-    load.power -= f.dot(particles.velocity()[j]);
   }
   return load;
 }

@@ -39,14 +39,15 @@ std::vector<Column> BodyLoads::columns() const {
 void BodyLoads::sample(const ParticleStore& particles, double time, std::span<double> values) {
   const geometry::RigidPose pose = body_.motion->pose(time);
   const Vec3& axis = body_.motion_config.axis;
-  const BodyLoad load = measure_body_load(
-      particles, body_.index, pose.place(body_.motion_config.axis_point), body_.vessel_axis_point);
+  const Vec3 own_axis_point = pose.place(body_.motion_config.axis_point);
+  const BodyLoad load =
+      measure_body_load(particles, body_.index, own_axis_point, body_.vessel_axis_point);
   values[0] = load.force.x();
   values[1] = load.force.y();
   values[2] = load.force.z();
   values[3] = axis.dot(load.torque_own);
   values[4] = axis.dot(load.torque_vessel);
-  values[5] = load.power;
+  values[5] = power_given(load, pose, own_axis_point);
   values[6] = std::abs(pose.angular_velocity.dot(load.torque_own));
   history_.add(time, values);
 }

@@ -56,12 +56,13 @@ std::vector<Column> PowerNumber::columns() const {
 
 void PowerNumber::sample(const ParticleStore& particles, double time, std::span<double> values) {
   const geometry::RigidPose pose = body_.motion->pose(time);
-  const BodyLoad load = measure_body_load(
-      particles, body_.index, pose.place(body_.motion_config.axis_point), body_.vessel_axis_point);
+  const Vec3 own_axis_point = pose.place(body_.motion_config.axis_point);
+  const BodyLoad load =
+      measure_body_load(particles, body_.index, own_axis_point, body_.vessel_axis_point);
   const double rotation_power = std::abs(pose.angular_velocity.dot(load.torque_own));
   values[0] = reynolds_;
   values[1] = power_number(rotation_power, density_, scales_);
-  values[2] = power_number(load.power, density_, scales_);
+  values[2] = power_number(power_given(load, pose, own_axis_point), density_, scales_);
   history_.add(time, values);
 }
 

@@ -1,0 +1,108 @@
+// The seed's validation vessel (section 2, after Youcefi et al. 1997; cases/youcefi_vessel.yaml),
+// Newtonian and laminar: Np = P / (rho N^3 d^5) falls as 1/Re, Re = rho N d^2 / mu (eqs. 25-26).
+// The test runs the case file at Re = 0.5, 1, 5 and 10 by changing the viscosity at N = 60
+// rpm (so the tip speed and c0 stay fixed), coarse enough for ctest: dp = 20 mm (the plate is
+// thickened to one spacing, 20 mm, since the seed's 8 mm plate holds no lattice point at this
+// spacing), about 7,000 particles. The vessel is closed by a lid at the fill height: without
+// gravity (the case leaves it out, as the seed does for the power curve) a free surface would
+// let the centrifugal force (omega^2 r = 6 m/s^2 at N = 1 r/s) empty the vessel's centre. The
+// torque of the plate settles on the viscous time of the
+// plate, (d/2)^2 / nu = Re / (4 N): each run lasts a few of those, and Np is the mean over the
+// last half revolution. Asserted: the fitted slope of log Np on log Re within 0.1 of -1 and
+// every Np Re within 10% of their mean (the issue's tolerances). Measured figures are in
+// docs/power.md ("Validation").
+// DISABLED: at this resolution it does not hold yet. Measured (2026-11-21): Np Re = 97.1, 101.6,
+// 119.5, 132 at Re = 0.5, 1, 5, 10, fitted slope -0.898 (tolerance 0.1 from -1: misses by
+// 0.002), spread -14% / +17% of the mean (tolerance 10%). The run at Re = 10 lasts 1.2 viscous
+// times of the plate and its Np was still falling; finer spacing and longer runs cost more
+// than ctest allows (this one takes 140 s). Kept so that the next session runs it by hand
+// (--gtest_also_run_disabled_tests) while it works on this validation (issue 4).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "app/runner.hpp"
+#include "app/simulation.hpp"
+#include "io/case.hpp"
+#include "support/temp_dir.hpp"
+
+namespace partimix {
+namespace {
+
+constexpr double kDensity = 1260.0;
+constexpr double kDiameter = 0.15;
+constexpr double kSpeed = 1.0;  // N [r/s]
+
+struct Point {
+  double reynolds = 0.0;
+  double end_time = 0.0;  // [s]
+};
+
+double power_number_at(const Point& point) {
+  const double viscosity = kDensity * kSpeed * kDiameter * kDiameter / point.reynolds;
+  const std::vector<std::string> overrides{"sph.spacing=0.02",
+                                           "sph.max_velocity=0.5",
+                                           "walls[1].width=0.02",
+                                           "walls[0].open=[]",
+                                           "walls[0].height=0.3",
+                                           "walls[1].height=0.28",
+                                           "walls[1].motion.rpm=60",
+                                           "walls[1].motion.ramp_time=0.05",
+                                           "fluid.viscosity=" + std::to_string(viscosity),
+                                           "time.end=" + std::to_string(point.end_time),
+                                           "time.sample_interval=0.02",
+                                           "output.frames=false",
+                                           "analyses[0].average_revolutions=0.5"};
+  const io::Case the_case =
+      io::load_case(std::string(PARTIMIX_SOURCE_DIR) + "/cases/youcefi_vessel.yaml", overrides);
+  app::Simulation simulation = app::build_simulation(the_case);
+  test_support::TempDir out("stirred_vessel");
+  app::RunOptions options;
+  options.output_dir = out.path();
+  options.show_progress = false;
+  app::Runner runner(the_case, *simulation.solver, simulation.bodies.get(), options);
+  EXPECT_EQ(runner.run().status, "completed");
+  EXPECT_NEAR(runner.figures().at("Re"), point.reynolds, 1e-6 * point.reynolds);
+  return runner.figures().at("Np");
+}
+
+TEST(StirredVessel, DISABLED_PowerNumberFallsAsOneOverReynoldsInLaminarFlow) {
+  const std::vector<Point> points{{0.5, 1.0}, {1.0, 1.0}, {5.0, 2.0}, {10.0, 3.0}};
+  std::vector<double> log_re;
+  std::vector<double> log_np;
+  std::vector<double> np_re;
+  for (const Point& point : points) {
+    const double np = power_number_at(point);
+    std::printf("Re %5.2f: Np %.4g, Np Re %.4g\n", point.reynolds, np, np * point.reynolds);
+    log_re.push_back(std::log(point.reynolds));
+    log_np.push_back(std::log(np));
+    np_re.push_back(np * point.reynolds);
+  }
+  const auto n = static_cast<double>(points.size());
+  double mean_x = 0.0;
+  double mean_y = 0.0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    mean_x += log_re[k] / n;
+    mean_y += log_np[k] / n;
+  }
+  double sxy = 0.0;
+  double sxx = 0.0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    sxy += (log_re[k] - mean_x) * (log_np[k] - mean_y);
+    sxx += (log_re[k] - mean_x) * (log_re[k] - mean_x);
+  }
+  const double slope = sxy / sxx;
+  double mean_np_re = 0.0;
+  for (const double value : np_re)
+    mean_np_re += value / n;
+  std::printf("fitted slope %.4f, mean Np Re %.4g\n", slope, mean_np_re);
+  EXPECT_NEAR(slope, -1.0, 0.1);
+  for (const double value : np_re)
+    EXPECT_NEAR(value / mean_np_re, 1.0, 0.1);
+}
+
+}  // namespace
+}  // namespace partimix
