@@ -55,10 +55,15 @@ void read_power_number(Reader& item, AnalysisSpec& analysis, const std::vector<W
 
 std::array<int, 3> read_cells(Reader& item, int count) {
   const Vec3 cells = item.vector("cells", count);
+  constexpr double kMostCells = 1.0e7;  // in all, so that the counts stay small ints
   std::array<int, 3> result{1, 1, 1};
+  double total = 1.0;
   for (int k = 0; k < count; ++k) {
     if (cells[k] < 1.0 || cells[k] != std::floor(cells[k]))
       throw item.error("cells", "cell counts must be whole numbers of at least 1");
+    total *= cells[k];
+    if (total > kMostCells)
+      throw item.error("cells", fmt::format("at most {:g} cells in all", kMostCells));
     result[static_cast<std::size_t>(k)] = static_cast<int>(cells[k]);
   }
   return result;
