@@ -26,6 +26,11 @@ void print_parameters(const Solver& solver) {
   }
 }
 
+void print_warnings(const Simulation& simulation) {
+  for (const std::string& warning : simulation.warnings)
+    fmt::print(stderr, "warning: {}\n", warning);
+}
+
 void print_figures(const std::map<std::string, double>& figures) {
   for (const auto& [name, value] : figures)
     fmt::print(stderr, "  {:<24} {:.6g}\n", name, value);
@@ -45,6 +50,7 @@ int run_command(const RunArguments& arguments) {
   try {
     const io::Case the_case = io::load_case(arguments.case_file, arguments.overrides);
     Simulation simulation = build_simulation(the_case);
+    print_warnings(simulation);
     if (arguments.threads > 0)
       omp_set_num_threads(arguments.threads);
     RunOptions options;
@@ -83,6 +89,7 @@ int check_command(const std::string& case_file, const std::vector<std::string>& 
   try {
     const io::Case the_case = io::load_case(case_file, overrides);
     const Simulation simulation = build_simulation(the_case);
+    print_warnings(simulation);
     fmt::print(stderr, "{}: valid ({} particles)\n", case_file, simulation.store->size());
     print_parameters(*simulation.solver);
     return kExitSuccess;

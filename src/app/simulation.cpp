@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -39,12 +40,17 @@ void check_inside_domain(const io::Case& the_case, const ParticleStore& store) {
   }
 }
 
+// The kernel support 2h (every kernel of partimix reaches `support` h) in spacings.
+double kernel_reach(const sph::Config& config) {
+  const auto kernel = sph::kernel_registry().create(config.kernel);
+  const double support = kernel ? kernel->support() : 2.0;
+  return support * config.smoothing_ratio;
+}
+
 int wall_layers_for(const sph::Config& config) {
   if (config.wall_layers)
     return *config.wall_layers;
-  const auto kernel = sph::kernel_registry().create(config.kernel);
-  const double support = kernel ? kernel->support() : 2.0;
-  return static_cast<int>(std::ceil(support * config.smoothing_ratio - 1e-9));
+  return static_cast<int>(std::ceil(kernel_reach(config) - 1e-9));
 }
 
 // Whether `x` lies inside the solid wall or closer than half a spacing to its surface, where
@@ -87,10 +93,36 @@ std::vector<Vec3> wall_points(const io::Case& the_case, std::size_t w, int layer
   return points;
 }
 
+// A warning when solid wall `w` (its particles `points`) is thinner than the kernel support 2h
+// everywhere (docs/geometry-meshes.md, "Bodies thinner than the kernel support"). Its thickness
+// is taken as 2 d + dp, d the depth of its deepest particle below the surface: exact for a slab
+// whose middle holds a lattice plane, within a spacing otherwise.
+std::optional<std::string> see_through_warning(const io::Case& the_case, std::size_t w,
+                                               const std::vector<Vec3>& points) {
+  const io::WallSpec& wall = the_case.walls[w];
+  if (!wall.solid)
+    return std::nullopt;
+  double depth = 0.0;
+  for (const Vec3& x : points)
+    depth = std::max(depth, -wall.shape->signed_distance(x));
+  const double spacing = the_case.sph.spacing;
+  const double thickness = 2.0 * depth + spacing;
+  const double support = kernel_reach(the_case.sph) * spacing;
+  if (thickness >= support - 1e-9 * spacing)
+    return std::nullopt;
+  return fmt::format(
+      "{}: walls[{}]: this solid wall is about {:.3g} m thick at its thickest, less than the "
+      "kernel support 2h = {:.3g} m: the fluid on its two sides interacts through it, so fluid "
+      "leaks across it and the loads on it come out too small; make it at least 2h thick or "
+      "sph.spacing at most {:.3g} m",
+      the_case.file, w, thickness, support, spacing * thickness / support);
+}
+
 // Fills `store` with the fluid regions and then the wall layers of the case (ids in creation
-// order), each wall a body with its motion.
+// order), each wall a body with its motion; adds to `warnings` what the case should hear.
 std::unique_ptr<geometry::MovingBodies> generate_particles(const io::Case& the_case,
-                                                           int wall_layers, ParticleStore& store) {
+                                                           int wall_layers, ParticleStore& store,
+                                                           std::vector<std::string>& warnings) {
   for (const auto& region : the_case.fluid.regions) {
     append(store, fluid_points(the_case, region), ParticleKind::fluid);
   }
@@ -98,7 +130,10 @@ std::unique_ptr<geometry::MovingBodies> generate_particles(const io::Case& the_c
   for (std::size_t w = 0; w < the_case.walls.size(); ++w) {
     const io::WallSpec& wall = the_case.walls[w];
     const std::size_t first = store.size();
-    append(store, wall_points(the_case, w, wall_layers), ParticleKind::wall);
+    const std::vector<Vec3> points = wall_points(the_case, w, wall_layers);
+    if (auto warning = see_through_warning(the_case, w, points))
+      warnings.push_back(std::move(*warning));
+    append(store, points, ParticleKind::wall);
     auto motion = geometry::motion_registry().create(wall.motion.type, wall.motion);
     if (!motion) {
       throw case_error(the_case, fmt::format("walls[{}].motion.type", w),
@@ -126,8 +161,8 @@ void tag_tracer(const io::Case& the_case, ParticleStore& store) {
 Simulation build_simulation(const io::Case& the_case) {
   Simulation simulation;
   simulation.store = std::make_unique<ParticleStore>();
-  simulation.bodies =
-      generate_particles(the_case, wall_layers_for(the_case.sph), *simulation.store);
+  simulation.bodies = generate_particles(the_case, wall_layers_for(the_case.sph), *simulation.store,
+                                         simulation.warnings);
   if (simulation.store->size() == 0) {
     throw case_error(the_case, "fluid.regions", "the case generates no particles");
   }

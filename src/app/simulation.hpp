@@ -2,6 +2,8 @@
 // A simulation built from a case (DESIGN.md, "One run"): the particle store filled from the
 // case geometry, and the solver chosen by the case's `solver` key.
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "geometry/moving_bodies.hpp"
 #include "io/case.hpp"
@@ -14,6 +16,7 @@ struct Simulation {
   std::unique_ptr<ParticleStore> store;
   std::unique_ptr<geometry::MovingBodies> bodies;  // one per wall of the case
   std::unique_ptr<Solver> solver;
+  std::vector<std::string> warnings;  // about the case as built, e.g. a see-through solid wall
 };
 
 // Throws InputError (naming the case key) when the case cannot be built, e.g. particles that

@@ -144,6 +144,20 @@ TEST(SolidWall, PlateThinnerThanHalfASpacingIsAnInputError) {
   }
 }
 
+// 2h = 0.06 m at dp = 0.02: a plate 0.06 thick (3 rows, the middle one 0.03 deep) passes; 0.04
+// (2 rows 0.01 deep: 0.04 thick by the estimate) and 0.02 (1 row) are seen through.
+TEST(SolidWall, PlateThinnerThanTheKernelSupportIsWarnedAbout) {
+  const test_support::TempDir folder;
+  EXPECT_TRUE(build(folder, tank_with_plate(0.06)).warnings.empty());
+  for (const double width : {0.04, 0.02}) {
+    const Simulation thin = build(folder, tank_with_plate(width));
+    ASSERT_EQ(thin.warnings.size(), 1u) << width;
+    EXPECT_THAT(thin.warnings[0], HasSubstr("case.yaml: walls[1]: this solid wall is about"));
+    EXPECT_THAT(thin.warnings[0], HasSubstr("less than the kernel support 2h = 0.06 m"));
+  }
+  EXPECT_THAT(build(folder, tank_with_plate(0.04)).warnings[0], HasSubstr("about 0.04 m thick"));
+}
+
 TEST(SolidWall, MeshCubeGivesTheParticlesOfTheEqualBox) {
   const Vec3 lo = Vec3::Constant(0.065);
   const Vec3 hi = Vec3::Constant(0.145);

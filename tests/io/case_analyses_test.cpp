@@ -307,6 +307,19 @@ TEST(CaseAnalyses, CellCountsMustBeWholeNumbersOfAtLeastOne) {
   }
 }
 
+TEST(CaseAnalyses, AtMostTenMillionCellsInAll) {
+  // 4000 x 2500 = 10^7 is allowed; one more ring is not, and neither is a count past int's range.
+  EXPECT_NO_THROW(load_text(
+      with_analyses("  - type: mixing\n    radius: 0.2\n    cells: [4000, 2500]\n", kTracer)));
+  const int line = first_item_line(kTracer);
+  for (const char* cells : {"[4001, 2500]", "[1, 1.0e12]"}) {
+    const InputError error = load_error(with_analyses(
+        std::string("  - type: mixing\n    radius: 0.2\n    cells: ") + cells + "\n", kTracer));
+    expect_location(error, "case.yaml", line + 2, 12, "analyses[0].cells");
+    EXPECT_THAT(error.message(), HasSubstr("at most 1e+07 cells in all")) << cells;
+  }
+}
+
 TEST(CaseAnalyses, MinCountMustBeAtLeastOne) {
   const int line = first_item_line(kTracer);
   const InputError error = load_error(with_analyses(
