@@ -15,7 +15,7 @@ build: deps
 
 demo: build
 	rm -rf out/demo
-	./$(BUILD_DIR)/partimix run cases/bohl_planetary_cmc.yaml --set time.end=1.0 --out out/demo
+	./$(BUILD_DIR)/partimix run cases/bohl_planetary_cmc.yaml --set time.end=0.75 --out out/demo
 	./$(BUILD_DIR)/partimix plot out/demo
 
 test: build

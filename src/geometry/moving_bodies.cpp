@@ -9,7 +9,8 @@ MovingBodies::MovingBodies(ParticleStore& store, const Domain& domain)
       domain_(domain),
       body_(store.add_integer("body", "").values),
       start_position_(store.add_vector("start_position", "m", false).values),
-      angular_velocity_(store.add_vector("angular_velocity", "rad/s", false).values) {
+      angular_velocity_(store.add_vector("angular_velocity", "rad/s", false).values),
+      acceleration_(store.add_vector("body_acceleration", "m/s^2", false).values) {
   std::fill(body_.begin(), body_.end(), -1);
 }
 
@@ -24,14 +25,19 @@ void MovingBodies::add_body(std::size_t first, std::unique_ptr<Motion> motion) {
   any_moving_ = any_moving_ || moving;
   motions_.push_back(std::move(motion));
   poses_.resize(motions_.size());
+  poses_before_.resize(motions_.size());
+  poses_after_.resize(motions_.size());
 }
 
 void MovingBodies::move_to(double time) {
   if (!any_moving_)
     return;
   for (std::size_t b = 0; b < motions_.size(); ++b) {
-    if (moving_[b])
+    if (moving_[b]) {
       poses_[b] = motions_[b]->pose(time);
+      poses_before_[b] = motions_[b]->pose(difference_start(time));
+      poses_after_[b] = motions_[b]->pose(difference_start(time) + 2.0 * kAccelerationStep);
+    }
   }
   auto& position = store_.position();
   auto& velocity = store_.velocity();
@@ -41,10 +47,14 @@ void MovingBodies::move_to(double time) {
     const auto i = static_cast<std::size_t>(ii);
     if (body_[i] < 0 || !moving_[static_cast<std::size_t>(body_[i])])
       continue;
-    const RigidPose& pose = poses_[static_cast<std::size_t>(body_[i])];
-    position[i] = pose.place(start_position_[i]);
-    velocity[i] = pose.velocity_at(position[i]);
-    angular_velocity_[i] = pose.angular_velocity;
+    const auto b = static_cast<std::size_t>(body_[i]);
+    const Vec3& start = start_position_[i];
+    position[i] = poses_[b].place(start);
+    velocity[i] = poses_[b].velocity_at(position[i]);
+    angular_velocity_[i] = poses_[b].angular_velocity;
+    const Vec3 before = poses_before_[b].velocity_at(poses_before_[b].place(start));
+    const Vec3 after = poses_after_[b].velocity_at(poses_after_[b].place(start));
+    acceleration_[i] = (after - before) / (2.0 * kAccelerationStep);
     domain_.wrap(position[i]);
   }
 }

@@ -119,6 +119,8 @@ sph::Config read_sph(Reader& root) {
       section.choice("velocity_gradient", "corrected", {"corrected", "plain"}) == "corrected";
   config.density = read_density(section);
   config.wall_layers = section.automatic<int>("wall_layers", at_least(1));
+  config.negative_wall_pressure =
+      section.optional<bool>("negative_wall_pressure", config.negative_wall_pressure);
   config.time_step = read_time_step(section);
   config.sort_interval = section.optional<int>("sort_interval", config.sort_interval, at_least(1));
   section.done();

@@ -35,7 +35,8 @@ struct Config {
   std::string viscosity_mean = "arithmetic";  // arithmetic | harmonic, pair mean (Morris term)
   bool corrected_velocity_gradient = true;    // kernel-gradient-corrected shear rate
   DensityTreatment density;
-  std::optional<int> wall_layers;  // when absent, enough layers to cover the kernel support
+  std::optional<int> wall_layers;       // when absent, enough layers to cover the kernel support
+  bool negative_wall_pressure = false;  // false: p_w = max(p_w, 0) (free-surface flows)
   TimeStepFactors time_step;
   int sort_interval = 20;  // re-sort particles by cell every N steps
 

@@ -12,6 +12,11 @@ inline const std::vector<Vec3>* angular_velocity_of(const ParticleStore& store) 
   return field != nullptr ? &field->values : nullptr;
 }
 
+inline const std::vector<Vec3>* body_acceleration_of(const ParticleStore& store) {
+  const Field<Vec3>* field = store.find_vector("body_acceleration");
+  return field != nullptr ? &field->values : nullptr;
+}
+
 struct Fields {
   explicit Fields(ParticleStore& store)
       : kind(store.kind()),
@@ -25,7 +30,8 @@ struct Fields {
         wall_velocity(store.add_vector("wall_velocity", "m/s", false).values),
         viscosity(store.add_scalar("viscosity", "Pa s").values),
         shear_rate(store.add_scalar("shear_rate", "1/s").values),
-        angular_velocity(angular_velocity_of(store)) {}
+        angular_velocity(angular_velocity_of(store)),
+        body_acceleration(body_acceleration_of(store)) {}
 
   std::vector<std::int32_t>& kind;
   std::vector<Vec3>& position;
@@ -41,6 +47,7 @@ struct Fields {
   // Wall particles of moving bodies: the body's angular velocity (geometry/moving_bodies.hpp);
   // null when the store has no bodies.
   const std::vector<Vec3>* angular_velocity;
+  const std::vector<Vec3>* body_acceleration;  // of moving wall particles; null without bodies
   // Viscous stress tau = 2 eta_a S of every particle, for the stress-form viscous operator only
   // (empty otherwise). Recomputed at every interaction, so it is not part of the store.
   std::vector<Mat3> viscous_stress;

@@ -24,6 +24,7 @@ struct Parameters {
   double artificial_viscosity = 0.0;     // Monaghan alpha
   DensityDiffusion diffusion = DensityDiffusion::fourtakas;
   double delta = 0.1;
+  bool negative_wall_pressure = false;  // false: the wall pressure is kept >= 0
 };
 
 }  // namespace partimix::sph

@@ -31,8 +31,14 @@ void update_wall_state(Fields& f, std::size_t fluid_count, const CellGrid& grid,
     };
     grid.for_each_neighbour(w, f.position, gather, fluid_count);
     if (weight > 0.0) {
-      // Adami et al. (2012), eq. 27, for a wall at rest in the frame of gravity.
-      f.pressure[w] = std::max(0.0, (pressure + parameters.gravity.dot(density_moment)) / weight);
+      // Adami et al. (2012), eq. 27, with the wall's own acceleration a_w; kept >= 0 unless the
+      // case allows tension at walls (docs/sph.md, "Walls").
+      Vec3 relative_gravity = parameters.gravity;
+      if (f.body_acceleration != nullptr)
+        relative_gravity -= (*f.body_acceleration)[w];
+      const double extrapolated = (pressure + relative_gravity.dot(density_moment)) / weight;
+      f.pressure[w] =
+          parameters.negative_wall_pressure ? extrapolated : std::max(0.0, extrapolated);
       f.density[w] = eos.density(f.pressure[w]);
       // Adami et al. (2012), eqs. 22-23, for the velocity relative to the body's rigid motion
       // (docs/sph.md, "Walls"): the rigid velocity at the fluid's mean position adds

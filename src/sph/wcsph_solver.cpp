@@ -77,6 +77,7 @@ Parameters make_parameters(const Config& config, const FluidProperties& fluid, c
   p.artificial_viscosity = config.artificial_viscosity;
   p.diffusion = diffusion_from(config.density.diffusion);
   p.delta = config.density.delta;
+  p.negative_wall_pressure = config.negative_wall_pressure;
   return p;
 }
 

@@ -1,22 +1,23 @@
 // The seed's validation vessel (section 2, after Youcefi et al. 1997; cases/youcefi_vessel.yaml),
 // Newtonian and laminar: Np = P / (rho N^3 d^5) falls as 1/Re, Re = rho N d^2 / mu (eqs. 25-26).
 // The test runs the case file at Re = 0.5, 1, 5 and 10 by changing the viscosity at N = 60
-// rpm (so the tip speed and c0 stay fixed), coarse enough for ctest: dp = 20 mm (the plate is
-// thickened to one spacing, 20 mm, since the seed's 8 mm plate holds no lattice point at this
-// spacing), about 7,000 particles. The vessel is closed by a lid at the fill height: without
-// gravity (the case leaves it out, as the seed does for the power curve) a free surface would
-// let the centrifugal force (omega^2 r = 6 m/s^2 at N = 1 r/s) empty the vessel's centre. The
-// torque of the plate settles on the viscous time of the
-// plate, (d/2)^2 / nu = Re / (4 N): each run lasts a few of those, and Np is the mean over the
-// last half revolution. Asserted: the fitted slope of log Np on log Re within 0.1 of -1 and
-// every Np Re within 10% of their mean (the issue's tolerances). Measured figures are in
-// docs/power.md ("Validation").
-// DISABLED: at this resolution it does not hold yet. Measured (2026-11-21): Np Re = 97.1, 101.6,
-// 119.5, 132 at Re = 0.5, 1, 5, 10, fitted slope -0.898 (tolerance 0.1 from -1: misses by
-// 0.002), spread -14% / +17% of the mean (tolerance 10%). The run at Re = 10 lasts 1.2 viscous
-// times of the plate and its Np was still falling; finer spacing and longer runs cost more
-// than ctest allows (this one takes 140 s). Kept so that the next session runs it by hand
-// (--gtest_also_run_disabled_tests) while it works on this validation (issue 4).
+// rpm (so the tip speed and c0 stay fixed), coarse enough for ctest: dp = 20 mm, about 7,000
+// particles. The plate is thickened to 60 mm = 2h, so that it is watertight: a plate one spacing
+// thick is seen through by the fluid (docs/geometry-meshes.md, "Bodies thinner than the kernel
+// support") and gave half the torque (Np Re = 97 instead of 155 at Re = 0.5). The vessel is
+// closed by a lid at the fill height: without gravity (the case leaves it out, as the seed does
+// for the power curve) a free surface would let the centrifugal force (omega^2 r = 6 m/s^2 at
+// N = 1 r/s) empty the vessel's centre. Np is the mean over the last half revolution, after a
+// few viscous times of the plate, (d/2)^2 / nu = Re / (4 N). Asserted: the fitted slope of
+// log Np on log Re within 0.1 of -1 and every Np Re within 10% of their mean (the issue's
+// tolerances). Measured figures are in docs/power.md ("Validation").
+// DISABLED: not shown to hold yet. Measured (2026-11-21, runs of the case by hand, watertight
+// plate): Np Re = 155.4 at Re = 0.5 and 181.0 at Re = 10 (with the wall acceleration in the wall
+// pressure), 170 at Re = 5 (before it; it moved Re = 10 by -1.4%): slope about -0.95, spread
+// about -6% / +9% of the mean, within the tolerances only narrowly, and Re = 1 was not rerun.
+// The rise of Np Re with Re (+16% from Re = 0.5 to 10) is the same at dp = 15 mm (+18%), is not
+// changed by a doubled sound speed, and is larger than the experiment's (slope -0.997). Kept
+// disabled until the whole test has run on the current code (about 4 minutes on one core).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -45,7 +46,7 @@ double power_number_at(const Point& point) {
   const double viscosity = kDensity * kSpeed * kDiameter * kDiameter / point.reynolds;
   const std::vector<std::string> overrides{"sph.spacing=0.02",
                                            "sph.max_velocity=0.5",
-                                           "walls[1].width=0.02",
+                                           "walls[1].width=0.06",
                                            "walls[0].open=[]",
                                            "walls[0].height=0.3",
                                            "walls[1].height=0.28",
