@@ -40,6 +40,7 @@ sph:
     delta: 0.2
     shepard_interval: 30
   wall_layers: 4
+  negative_wall_pressure: true
   time_step:
     cfl: 0.3
     viscous: 0.1
@@ -134,6 +135,7 @@ TEST(CaseLoader, Full2DCaseHasTheSphSettingsWritten) {
   EXPECT_DOUBLE_EQ(sph.density.delta, 0.2);
   EXPECT_EQ(sph.density.shepard_interval, 30);
   EXPECT_EQ(sph.wall_layers, 4);
+  EXPECT_TRUE(sph.negative_wall_pressure);
   EXPECT_DOUBLE_EQ(sph.time_step.cfl, 0.3);
   EXPECT_DOUBLE_EQ(sph.time_step.viscous, 0.1);
   EXPECT_DOUBLE_EQ(sph.time_step.force, 0.2);
@@ -174,6 +176,7 @@ TEST(CaseLoader, MinimalCaseTakesTheDefaults) {
   EXPECT_FALSE(loaded.sph.sound_speed.has_value());
   EXPECT_FALSE(loaded.sph.max_velocity.has_value());
   EXPECT_FALSE(loaded.sph.wall_layers.has_value());
+  EXPECT_FALSE(loaded.sph.negative_wall_pressure);
   EXPECT_EQ(loaded.sph.density.diffusion, "fourtakas");
   EXPECT_EQ(loaded.sph.sort_interval, 20);
   EXPECT_EQ(loaded.sph.viscous_operator, "auto");
