@@ -11,13 +11,11 @@
 // few viscous times of the plate, (d/2)^2 / nu = Re / (4 N). Asserted: the fitted slope of
 // log Np on log Re within 0.1 of -1 and every Np Re within 10% of their mean (the issue's
 // tolerances). Measured figures are in docs/power.md ("Validation").
-// DISABLED: not shown to hold yet. Measured (2026-11-21, runs of the case by hand, watertight
-// plate): Np Re = 155.4 at Re = 0.5 and 181.0 at Re = 10 (with the wall acceleration in the wall
-// pressure), 170 at Re = 5 (before it; it moved Re = 10 by -1.4%): slope about -0.95, spread
-// about -6% / +9% of the mean, within the tolerances only narrowly, and Re = 1 was not rerun.
-// The rise of Np Re with Re (+16% from Re = 0.5 to 10) is the same at dp = 15 mm (+18%), is not
-// changed by a doubled sound speed, and is larger than the experiment's (slope -0.997). Kept
-// disabled until the whole test has run on the current code (about 4 minutes on one core).
+// Measured (2026-11-21, this test, one thread, 156 s): Np Re = 155.4, 159.5, 172.8, 182.5 at
+// Re = 0.5, 1, 5, 10; fitted slope -0.947; spread -7.2% / +9.0% about the mean 167.5. It holds
+// the tolerances, but narrowly: Np Re rises with Re by 17%, where the experiment is flat
+// (slope -0.997); docs/power.md says what was ruled out. The absolute constant is not converged
+// with dp (docs/power.md).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -70,7 +68,7 @@ double power_number_at(const Point& point) {
   return runner.figures().at("Np");
 }
 
-TEST(StirredVessel, DISABLED_PowerNumberFallsAsOneOverReynoldsInLaminarFlow) {
+TEST(StirredVessel, PowerNumberFallsAsOneOverReynoldsInLaminarFlow) {
   const std::vector<Point> points{{0.5, 1.0}, {1.0, 1.0}, {5.0, 2.0}, {10.0, 3.0}};
   std::vector<double> log_re;
   std::vector<double> log_np;

@@ -1,0 +1,52 @@
+// Every case file in cases/ loads, builds and runs its first steps to completion at its own
+// resolution, with its analyses: a case that a change of keys or defaults breaks fails here
+// rather than in a user's hands. The physics of the cases is checked in tests/validation/.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "app/runner.hpp"
+#include "app/simulation.hpp"
+#include "io/case.hpp"
+#include "support/temp_dir.hpp"
+
+namespace partimix {
+namespace {
+
+std::vector<std::string> shipped_cases() {
+  std::vector<std::string> files;
+  const std::filesystem::path folder = std::filesystem::path(PARTIMIX_SOURCE_DIR) / "cases";
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    if (entry.path().extension() == ".yaml")
+      files.push_back(entry.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+TEST(ShippedCases, EveryCaseFileRunsItsFirstSteps) {
+  const std::vector<std::string> files = shipped_cases();
+  ASSERT_GE(files.size(), 10U);
+  for (const std::string& file : files) {
+    SCOPED_TRACE(file);
+    const io::Case the_case = io::load_case(file, {"time.end=0.002"});
+    app::Simulation simulation = app::build_simulation(the_case);
+    test_support::TempDir out("shipped_case");
+    app::RunOptions options;
+    options.output_dir = out.path();
+    options.show_progress = false;
+    app::Runner runner(the_case, *simulation.solver, simulation.bodies.get(), options);
+    const io::RunSummary summary = runner.run();
+    EXPECT_EQ(summary.status, "completed");
+    EXPECT_GT(summary.steps, 0U);
+    for (const auto& [name, value] : runner.figures())
+      EXPECT_TRUE(std::isfinite(value)) << name;
+  }
+}
+
+}  // namespace
+}  // namespace partimix
