@@ -28,8 +28,12 @@ test-sanitize: deps
 	cmake --build $(SANITIZE_DIR) -j $(JOBS)
 	cd $(SANITIZE_DIR) && ctest --output-on-failure -j $(JOBS) -L unit
 
+# One process per benchmark family: the peak resident set per particle is that of the process.
 bench: build
-	./$(BUILD_DIR)/bench/partimix_bench --benchmark_counters_tabular=true
+	for family in dam_break_3d planetary_mixer_cmc; do \
+	  ./$(BUILD_DIR)/bench/partimix_bench --benchmark_counters_tabular=true \
+	    --benchmark_filter="^$$family/" || exit 1; \
+	done
 
 format:
 	find src tests bench -name '*.cpp' -o -name '*.hpp' | xargs clang-format -i
