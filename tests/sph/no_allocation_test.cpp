@@ -6,8 +6,10 @@
 #include <atomic>
 #include <cstdlib>
 #include <new>
+#include <string>
 
 #include "app/simulation.hpp"
+#include "io/case.hpp"
 #include "validation/case_factory.hpp"
 
 namespace {
@@ -61,6 +63,14 @@ TEST(NoAllocation, NonNewtonianStressFormStepsDoNotAllocate) {
   c.fluid.rheology.flow_index = 0.5;
   c.fluid.rheology.viscosity_max = 1.0;
   c.sph.viscous_operator = "stress";
+  EXPECT_EQ(allocations_in_40_steps_after_warm_up(c), 0);
+}
+
+// A planetary impeller in the CMC fluid (the demo's case, coarser): moving bodies with their
+// poses, velocities and accelerations updated every half step.
+TEST(NoAllocation, PlanetaryMixerStepsDoNotAllocate) {
+  const io::Case c = io::load_case(
+      std::string(PARTIMIX_SOURCE_DIR) + "/cases/bohl_planetary_cmc.yaml", {"sph.spacing=0.009"});
   EXPECT_EQ(allocations_in_40_steps_after_warm_up(c), 0);
 }
 
