@@ -1,13 +1,15 @@
 #!/usr/bin/env python3
-"""Plot a sweep on log-log axes: python3 tools/plot_sweep.py SWEEPDIR [--x Re --y Np]
+"""Plot a sweep on log-log axes: python3 tools/plot_sweep.py SWEEPDIR... [--x Re --y Np]
 
 Reads SWEEPDIR/sweep.csv (written by `partimix sweep`, docs/sweeps.md), keeps the rows where
 both columns hold positive numbers, fits the least-squares line of log10(y) on log10(x), and
 writes SWEEPDIR/<y>_<x>.png in lower case (np_re.png by default): the points and the fitted
 line, its slope in the legend. Prints "slope = <value>" on stdout. A column is named as in the
-header, with or without a unit after a space ("Np" matches "Np [-]"). Exit codes: 0 success,
-1 plotting failed, 2 bad input (no sweep.csv, a missing column, fewer than two usable rows, or
-all x equal).
+header, with or without a unit after a space ("Np" matches "Np [-]"). Several sweep folders
+draw into one plot, each with its own fit and legend label (--labels, default the folders'
+names), one "slope = " line each, written to --out (default: in the first folder). Exit codes:
+0 success, 1 plotting failed, 2 bad input (no sweep.csv, a missing column, fewer than two
+usable rows, all x equal, or as many labels as folders not given).
 
 Needs matplotlib and numpy (Debian: python3-matplotlib, python3-numpy for /usr/bin/python3).
 """
@@ -98,17 +100,18 @@ def load_pyplot():
     return plt
 
 
-def draw(pairs, fit, x_name, y_name, path):
+def draw(series, x_name, y_name, path):
+    """series: (label, pairs, fit) per sweep; one colour each, points and fitted line."""
     import numpy as np
 
     plt = load_pyplot()
-    slope, intercept = fit
-    xs = np.array(sorted(x for x, _ in pairs))
     figure, axes = plt.subplots(figsize=(6.4, 4.8))
-    axes.loglog([x for x, _ in pairs], [y for _, y in pairs], "o", label="runs")
-    axes.loglog(xs, 10.0**intercept * xs**slope, "-",
-                label=f"fit: slope {slope:.4f} ({y_name} = {10.0**intercept:.4g} "
-                f"{x_name}^{slope:.4f})")
+    for label, pairs, (slope, intercept) in series:
+        xs = np.array(sorted(x for x, _ in pairs))
+        points = axes.loglog([x for x, _ in pairs], [y for _, y in pairs], "o", label=label)
+        axes.loglog(xs, 10.0**intercept * xs**slope, "-", color=points[0].get_color(),
+                    label=f"fit: slope {slope:.4f} ({y_name} = {10.0**intercept:.4g} "
+                    f"{x_name}^{slope:.4f})")
     axes.set_xlabel(x_name)
     axes.set_ylabel(y_name)
     axes.grid(True, which="both", alpha=0.3)
@@ -121,25 +124,35 @@ def draw(pairs, fit, x_name, y_name, path):
 def main(argv):
     parser = argparse.ArgumentParser(description="Log-log plot of SWEEPDIR/sweep.csv with a "
                                      "fitted power law.")
-    parser.add_argument("sweepdir", type=Path, help="a partimix sweep folder")
+    parser.add_argument("sweepdirs", type=Path, nargs="+", help="partimix sweep folders")
     parser.add_argument("--x", default="Re", help="column on the x axis (default: Re)")
     parser.add_argument("--y", default="Np", help="column on the y axis (default: Np)")
+    parser.add_argument("--labels", nargs="+", help="one legend label per sweep folder")
+    parser.add_argument("--out", type=Path, help="the PNG file (default: in the first folder)")
     args = parser.parse_args(argv)
+    labels = args.labels or (["runs"] if len(args.sweepdirs) == 1
+                             else [folder.name for folder in args.sweepdirs])
     try:
-        pairs = read_pairs(args.sweepdir / "sweep.csv", args.x, args.y)
+        if len(labels) != len(args.sweepdirs):
+            raise BadInput(f"{len(labels)} labels for {len(args.sweepdirs)} sweep folders")
+        all_pairs = [read_pairs(folder / "sweep.csv", args.x, args.y)
+                     for folder in args.sweepdirs]
     except BadInput as error:
         print(f"plot_sweep: {error}", file=sys.stderr)
         return EXIT_BAD_INPUT
-    plot = args.sweepdir / re.sub(r"[^a-z0-9_.-]", "_", f"{args.y}_{args.x}.png".lower())
+    plot = args.out or args.sweepdirs[0] / re.sub(r"[^a-z0-9_.-]", "_",
+                                                  f"{args.y}_{args.x}.png".lower())
     try:
-        fit = fit_power_law(pairs)
-        draw(pairs, fit, args.x, args.y, plot)
+        series = [(label, pairs, fit_power_law(pairs)) for label, pairs in zip(labels, all_pairs)]
+        draw(series, args.x, args.y, plot)
     except ImportError as error:
         print(f"plot_sweep: {error}; install matplotlib and numpy for {sys.executable} "
               "(Debian: python3-matplotlib python3-numpy)", file=sys.stderr)
         return EXIT_FAILED
-    print(f"slope = {fit[0]:.10g}")
-    print(f"plot_sweep: {len(pairs)} points, wrote {plot}", file=sys.stderr)
+    for _, _, (slope, _) in series:
+        print(f"slope = {slope:.10g}")
+    points = sum(len(pairs) for pairs in all_pairs)
+    print(f"plot_sweep: {points} points, wrote {plot}", file=sys.stderr)
     return 0
 
 

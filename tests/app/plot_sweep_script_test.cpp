@@ -3,7 +3,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
+#include <iomanip>
 #include <regex>
 #include <string>
 #include <vector>
@@ -55,6 +57,34 @@ TEST(PlotSweepScript, FitsSlopeMinusOneToNpOver40Re) {
       << outcome.output;
   EXPECT_NEAR(std::stod(slope[1].str()), -1.0, 1e-6);
   EXPECT_THAT(read_file(dir / "np_re.png"), StartsWith("\x89PNG"));
+}
+
+TEST(PlotSweepScript, FitsEachOfSeveralSweepsIntoOnePlot) {
+  const TempDir newtonian("newtonian");
+  write_laminar_sweep(newtonian);
+  const TempDir shear_thinning("shear_thinning");
+  {
+    std::ofstream csv(shear_thinning / "sweep.csv");
+    csv << std::setprecision(15) << "run,status,Np,Re\n";
+    for (const double re : {2.0, 10.0})
+      csv << "run,completed," << 50.0 * std::pow(re, -0.9) << "," << re << "\n";
+  }
+  const std::string png = (newtonian / "both.png").string();
+  const ScriptOutcome outcome = plot_sweep(
+      newtonian, {shear_thinning.path().string(), "--labels", "Newtonian", "CMC", "--out", png});
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.output;
+  std::vector<double> slopes;
+  const std::regex line("slope = (\\S+)");
+  for (auto it = std::sregex_iterator(outcome.output.begin(), outcome.output.end(), line);
+       it != std::sregex_iterator(); ++it)
+    slopes.push_back(std::stod((*it)[1].str()));
+  ASSERT_EQ(slopes.size(), 2U) << outcome.output;
+  EXPECT_NEAR(slopes[0], -1.0, 1e-6);
+  EXPECT_NEAR(slopes[1], -0.9, 1e-6);
+  EXPECT_THAT(read_file(png), StartsWith("\x89PNG"));
+  const ScriptOutcome labels = plot_sweep(newtonian, {"--labels", "a", "b"});
+  EXPECT_EQ(labels.exit_code, 2);
+  EXPECT_THAT(labels.output, HasSubstr("2 labels for 1 sweep folders"));
 }
 
 TEST(PlotSweepScript, IsWhatTheSweepRunsForTheNpRePlot) {
