@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "app/child_process.hpp"
 #include "support/temp_dir.hpp"
+#include "tool_script.hpp"
 
 namespace partimix::app {
 namespace {
@@ -20,17 +20,8 @@ using test_support::TempDir;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
-struct ScriptOutcome {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
-
 ScriptOutcome plot_compare(const TempDir& dir, const std::vector<std::string>& arguments) {
-  std::vector<std::string> argv{"/usr/bin/python3",
-                                std::string(PARTIMIX_SOURCE_DIR) + "/tools/plot_compare.py"};
-  argv.insert(argv.end(), arguments.begin(), arguments.end());
-  const int code = wait_process(start_process(argv, dir / "log.txt"));
-  return {code, read_file(dir / "log.txt")};
+  return run_tool_script(dir, "plot_compare.py", arguments);
 }
 
 // A run folder dir/name whose xi falls from 1 as exp(-rate t).

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "app/child_process.hpp"
 #include "app/sweep_plot.hpp"
 #include "support/temp_dir.hpp"
+#include "tool_script.hpp"
 
 namespace partimix::app {
 namespace {
@@ -22,18 +22,10 @@ using test_support::TempDir;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
-struct ScriptOutcome {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
-
 ScriptOutcome plot_sweep(const TempDir& dir, const std::vector<std::string>& options = {}) {
-  std::vector<std::string> argv{"/usr/bin/python3",
-                                std::string(PARTIMIX_SOURCE_DIR) + "/tools/plot_sweep.py",
-                                dir.path().string()};
-  argv.insert(argv.end(), options.begin(), options.end());
-  const int code = wait_process(start_process(argv, dir / "log.txt"));
-  return {code, read_file(dir / "log.txt")};
+  std::vector<std::string> arguments{dir.path().string()};
+  arguments.insert(arguments.end(), options.begin(), options.end());
+  return run_tool_script(dir, "plot_sweep.py", arguments);
 }
 
 // Np = 40 / Re at four Reynolds numbers, plus a failed run without figures.

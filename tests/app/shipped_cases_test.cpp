@@ -9,10 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "app/runner.hpp"
-#include "app/simulation.hpp"
 #include "io/case.hpp"
-#include "support/temp_dir.hpp"
+#include "support/case_run.hpp"
 
 namespace partimix {
 namespace {
@@ -34,16 +32,10 @@ TEST(ShippedCases, EveryCaseFileRunsItsFirstSteps) {
   for (const std::string& file : files) {
     SCOPED_TRACE(file);
     const io::Case the_case = io::load_case(file, {"time.end=0.002"});
-    app::Simulation simulation = app::build_simulation(the_case);
-    test_support::TempDir out("shipped_case");
-    app::RunOptions options;
-    options.output_dir = out.path();
-    options.show_progress = false;
-    app::Runner runner(the_case, *simulation.solver, simulation.bodies.get(), options);
-    const io::RunSummary summary = runner.run();
-    EXPECT_EQ(summary.status, "completed");
-    EXPECT_GT(summary.steps, 0U);
-    for (const auto& [name, value] : runner.figures())
+    const test_support::CaseRun run = test_support::run_case(the_case);
+    EXPECT_EQ(run.summary.status, "completed");
+    EXPECT_GT(run.summary.steps, 0U);
+    for (const auto& [name, value] : run.figures)
       EXPECT_TRUE(std::isfinite(value)) << name;
   }
 }

@@ -23,10 +23,8 @@
 #include <string>
 #include <vector>
 
-#include "app/runner.hpp"
-#include "app/simulation.hpp"
 #include "io/case.hpp"
-#include "support/temp_dir.hpp"
+#include "support/case_run.hpp"
 
 namespace partimix {
 namespace {
@@ -57,15 +55,10 @@ double power_number_at(const Point& point) {
                                            "analyses[0].average_revolutions=0.5"};
   const io::Case the_case =
       io::load_case(std::string(PARTIMIX_SOURCE_DIR) + "/cases/youcefi_vessel.yaml", overrides);
-  app::Simulation simulation = app::build_simulation(the_case);
-  test_support::TempDir out("stirred_vessel");
-  app::RunOptions options;
-  options.output_dir = out.path();
-  options.show_progress = false;
-  app::Runner runner(the_case, *simulation.solver, simulation.bodies.get(), options);
-  EXPECT_EQ(runner.run().status, "completed");
-  EXPECT_NEAR(runner.figures().at("Re"), point.reynolds, 1e-6 * point.reynolds);
-  return runner.figures().at("Np");
+  const test_support::CaseRun run = test_support::run_case(the_case);
+  EXPECT_EQ(run.summary.status, "completed");
+  EXPECT_NEAR(run.figures.at("Re"), point.reynolds, 1e-6 * point.reynolds);
+  return run.figures.at("Np");
 }
 
 TEST(StirredVessel, PowerNumberFallsAsOneOverReynoldsInLaminarFlow) {
