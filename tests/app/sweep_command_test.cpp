@@ -1,6 +1,7 @@
 // `partimix sweep` end to end on the Poiseuille case cut to a few steps: one run per
 // combination, each in its own folder, gathered in sweep.csv; bad --vary writes nothing; a
-// failed run or Ctrl-C still leaves the table.
+// failed run or Ctrl-C still leaves the table. And on the seed's vessel, coarse and short: the
+// Np-Re plot with its fitted slope.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -8,6 +9,7 @@
 #include <csignal>
 #include <cstddef>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -125,6 +127,36 @@ TEST_F(SweepCommand, SigintEndsTheRunningRunAndSkipsTheRest) {
   ASSERT_EQ(cells.size(), 3u);
   EXPECT_THAT(first(cells[1], 3), ElementsAre("run_000", "1000", "interrupted"));
   EXPECT_THAT(first(cells[2], 3), ElementsAre("run_001", "2000", "skipped"));
+}
+
+TEST(SweepOfAVessel, WritesTheNpRePlotWithItsFittedSlope) {
+  // The seed's vessel, very coarse (dp = 40 mm, plate 120 mm = 2h) and 0.1 s long, at Re = 10
+  // and 1: the sweep gathers Re and Np, fits the power law and draws np_re.png. Even in the
+  // start-up the torque grows with the viscosity, so Np falls with Re.
+  const Scratch scratch;
+  const std::string vessel = std::string(PARTIMIX_SOURCE_DIR) + "/cases/youcefi_vessel.yaml";
+  const Outcome outcome = run_partimix(scratch, {"sweep",  vessel,
+                                                 "--vary", "fluid.viscosity=2.835,28.35",
+                                                 "--out",  "s",
+                                                 "-t",     "1",
+                                                 "--set",  "sph.spacing=0.04",
+                                                 "--set",  "walls[1].width=0.12",
+                                                 "--set",  "domain.min=[-0.3,-0.3,-0.2]",
+                                                 "--set",  "domain.max=[0.3,0.3,0.5]",
+                                                 "--set",  "walls[1].motion.rpm=60",
+                                                 "--set",  "walls[1].motion.ramp_time=0.01",
+                                                 "--set",  "sph.max_velocity=0.5",
+                                                 "--set",  "time.end=0.1",
+                                                 "--set",  "output.frames=false"});
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  const auto cells = read_csv_cells(scratch.work() / "s" / "sweep.csv");
+  ASSERT_EQ(cells.size(), 3u);
+  EXPECT_THAT(first(cells[0], 6),
+              ElementsAre("run", "fluid.viscosity", "status", "Np", "Np_total", "Re"));
+  std::smatch slope;
+  ASSERT_TRUE(std::regex_search(outcome.out, slope, std::regex("slope = (\\S+)"))) << outcome.out;
+  EXPECT_LT(std::stod(slope[1].str()), 0.0);
+  EXPECT_EQ(read_file(scratch.work() / "s" / "np_re.png").substr(0, 4), "\x89PNG");
 }
 
 }  // namespace
