@@ -14,8 +14,9 @@
 // Measured (2026-11-21, this test, one thread, 156 s): Np Re = 155.4, 159.5, 172.8, 182.5 at
 // Re = 0.5, 1, 5, 10; fitted slope -0.947; spread -7.2% / +9.0% about the mean 167.5. It holds
 // the tolerances, but narrowly: Np Re rises with Re by 17%, where the experiment is flat
-// (slope -0.997); docs/power.md says what was ruled out. The absolute constant is not converged
-// with dp (docs/power.md).
+// (slope -0.997); docs/power.md says what was ruled out. At dp = 10 mm the rise is the same
+// (+19%) and the spread -7.7% / +10.2% would fail this test by a little. The absolute constant
+// is not converged with dp (155 at 20 mm, 207 at 10 mm at Re = 0.5; docs/power.md).
 #include <gtest/gtest.h>
 
 #include <cmath>
