@@ -1,0 +1,14 @@
+#pragma once
+// Hertz normal force with viscous damping (docs/dem.md, "Normal force"):
+// F_n = k_H d^(3/2) - sqrt(5) beta sqrt(m* k_H) d^(1/4) u_n, k_H = (4/3) E* sqrt(R*); the
+// coefficient sqrt(5) beta gives restitution e exactly (Antypov and Elliott 2011).
+#include "dem/normal_contact.hpp"
+
+namespace partimix::dem {
+
+class HertzContact final : public NormalContactLaw {
+ public:
+  double force(const PairProperties& pair, double overlap, double normal_velocity) const override;
+};
+
+}  // namespace partimix::dem

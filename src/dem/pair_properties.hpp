@@ -1,0 +1,32 @@
+#pragma once
+// The effective radius, mass and moduli of a contact between two spheres, or a sphere and a
+// wall (radius and mass infinite), and the damping factor of a restitution coefficient
+// (docs/dem.md, "Effective quantities" and "Normal force").
+namespace partimix::dem {
+
+struct Material {
+  double youngs_modulus = 0.0;  // E [Pa]
+  double poisson_ratio = 0.0;   // nu
+};
+
+// One side of a contact: a sphere, or a wall with radius and mass +infinity.
+struct ContactSide {
+  Material material;
+  double radius = 0.0;  // [m]
+  double mass = 0.0;    // [kg]
+};
+
+struct PairProperties {
+  double radius = 0.0;          // R* [m]
+  double mass = 0.0;            // m* [kg]
+  double youngs_modulus = 0.0;  // E* [Pa]
+  double shear_modulus = 0.0;   // G* [Pa]
+  double damping = 0.0;         // beta = -ln e / sqrt(pi^2 + ln^2 e), 0 for e = 1
+};
+
+// beta of restitution e in (0, 1].
+double damping_factor(double restitution);
+
+PairProperties pair_properties(const ContactSide& a, const ContactSide& b, double restitution);
+
+}  // namespace partimix::dem
