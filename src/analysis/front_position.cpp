@@ -14,7 +14,7 @@ void FrontPosition::sample(const ParticleStore& particles, double /*time*/,
                            std::span<double> values) {
   double front = std::numeric_limits<double>::lowest();
   for (std::size_t i = 0; i < particles.size(); ++i) {
-    if (particles.is_fluid(i))
+    if (particles.is_material(i))
       front = std::max(front, particles.position()[i][axis_]);
   }
   values[0] = front;

@@ -1,5 +1,5 @@
 #pragma once
-// Kinetic energy of the moving (fluid) particles: E = sum_i m_i |v_i|^2 / 2.
+// Kinetic energy of the material particles (fluid or grains; translation only): E = sum_i m_i |v_i|^2 / 2.
 #include "analysis/analysis.hpp"
 
 namespace partimix::analysis {

@@ -1,5 +1,5 @@
 #pragma once
-// Largest speed |v| of any fluid particle.
+// Largest speed |v| of any material particle (fluid or grain).
 #include "analysis/analysis.hpp"
 
 namespace partimix::analysis {

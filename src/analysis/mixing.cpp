@@ -8,7 +8,7 @@ Mixing::Mixing(const MixingRegion& region)
 void Mixing::sample(const ParticleStore& particles, double /*time*/, std::span<double> values) {
   roles_.resize(particles.size());
   for (std::size_t i = 0; i < particles.size(); ++i) {
-    if (!particles.is_fluid(i))
+    if (!particles.is_material(i))
       roles_[i] = MixingRole::ignored;
     else
       roles_[i] = particles.tag()[i] == 1 ? MixingRole::tracer : MixingRole::other;

@@ -1,7 +1,8 @@
 #pragma once
-// Mixing of a tracer in the fluid (docs/mixing.md): the uniformity index xi (seed eq. 28) and
-// the Lacey index M over sampling cells, each sample. Tracer particles carry tag 1, the rest of
-// the mixture tag 0; wall particles are not counted. The summary gives the last values.
+// Mixing of a tracer in the material (fluid or grains) (docs/mixing.md): the uniformity index xi
+// (seed eq. 28) and the Lacey index M over sampling cells, each sample. Tracer particles carry tag
+// 1, the rest of the mixture tag 0; wall particles are not counted. The summary gives the last
+// values.
 #include <memory>
 
 #include "analysis/analysis.hpp"

@@ -13,8 +13,9 @@
 
 namespace partimix {
 
-// What a particle is. Wall particles are fixed boundary particles of a vessel or body.
-enum class ParticleKind : std::int32_t { fluid = 0, wall = 1 };
+// What a particle is. Wall particles are fixed boundary particles of a vessel or body (SPH);
+// grains are the spheres of DEM. Fluid and grains are the material that analyses measure.
+enum class ParticleKind : std::int32_t { fluid = 0, wall = 1, grain = 2 };
 
 template <class T>
 struct Field {
@@ -62,6 +63,11 @@ class ParticleStore {
 
   bool is_fluid(std::size_t i) const {
     return kinds_->values[i] == static_cast<std::int32_t>(ParticleKind::fluid);
+  }
+
+  // A particle of the material a method moves (SPH fluid or DEM grain), not a wall.
+  bool is_material(std::size_t i) const {
+    return kinds_->values[i] != static_cast<std::int32_t>(ParticleKind::wall);
   }
 
   const std::deque<Field<double>>& scalar_fields() const { return scalars_; }
