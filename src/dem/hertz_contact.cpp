@@ -12,4 +12,12 @@ double HertzContact::force(const PairProperties& pair, double overlap,
   return k_hertz * overlap * root - damping * std::sqrt(root) * normal_velocity;
 }
 
+double HertzContact::normal_stiffness(const PairProperties& pair, double overlap) const {
+  return 2.0 * pair.youngs_modulus * std::sqrt(pair.radius * overlap);
+}
+
+double HertzContact::tangential_stiffness(const PairProperties& pair, double overlap) const {
+  return 8.0 * pair.shear_modulus * std::sqrt(pair.radius * overlap);
+}
+
 }  // namespace partimix::dem

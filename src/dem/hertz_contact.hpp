@@ -2,6 +2,7 @@
 // Hertz normal force with viscous damping (docs/dem.md, "Normal force"):
 // F_n = k_H d^(3/2) - sqrt(5) beta sqrt(m* k_H) d^(1/4) u_n, k_H = (4/3) E* sqrt(R*); the
 // coefficient sqrt(5) beta gives restitution e exactly (Antypov and Elliott 2011).
+// Tangential stiffness after Mindlin (1949).
 #include "dem/normal_contact.hpp"
 
 namespace partimix::dem {
@@ -9,6 +10,10 @@ namespace partimix::dem {
 class HertzContact final : public NormalContactLaw {
  public:
   double force(const PairProperties& pair, double overlap, double normal_velocity) const override;
+  // S_n = 2 E* sqrt(R* d).
+  double normal_stiffness(const PairProperties& pair, double overlap) const override;
+  // Mindlin: k_t = 8 G* sqrt(R* d).
+  double tangential_stiffness(const PairProperties& pair, double overlap) const override;
 };
 
 }  // namespace partimix::dem

@@ -14,6 +14,11 @@ class NormalContactLaw {
   // relative velocity u_n = v_c . n of the contact point (negative while the pair approaches).
   virtual double force(const PairProperties& pair, double overlap,
                        double normal_velocity) const = 0;
+  // The tangent normal stiffness dF_n/d(overlap) of the elastic part [N/m]: the rolling spring
+  // of the elastic-plastic rolling resistance is made from it.
+  virtual double normal_stiffness(const PairProperties& pair, double overlap) const = 0;
+  // The stiffness k_t of the tangential spring [N/m] (docs/dem.md, "Tangential force").
+  virtual double tangential_stiffness(const PairProperties& pair, double overlap) const = 0;
 };
 
 struct NormalLawParameters {

@@ -1,0 +1,48 @@
+#include "dem/tangential_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace partimix::dem {
+
+double seed_spring_cap(const PairProperties& pair, double friction, double overlap) {
+  return friction * pair.youngs_modulus / (4.0 * pair.shear_modulus) * overlap;
+}
+
+namespace {
+
+// R(n_old -> n) xi: the normal part removed and the old length restored (Luding 2008).
+void carry_into_plane(Vec3& spring, const Vec3& normal) {
+  const double length = spring.norm();
+  if (length == 0.0)
+    return;
+  spring -= spring.dot(normal) * normal;
+  const double in_plane = spring.norm();
+  spring = in_plane > 0.0 ? Vec3(spring * (length / in_plane)) : Vec3::Zero();
+}
+
+void limit_length(Vec3& spring, double cap) {
+  const double length = spring.norm();
+  if (length > cap)
+    spring *= cap / length;
+}
+
+}  // namespace
+
+Vec3 tangential_force(const PairProperties& pair, const TangentialStep& step, Vec3& spring) {
+  carry_into_plane(spring, step.normal);
+  spring += step.tangential_velocity * step.dt;
+  limit_length(spring, step.spring_cap);
+  const double damping =
+      2.0 * std::sqrt(5.0 / 6.0) * pair.damping * std::sqrt(step.stiffness * pair.mass);
+  const Vec3 trial = -step.stiffness * spring - damping * step.tangential_velocity;
+  const double coulomb = step.friction * std::max(step.normal_force, 0.0);
+  const double size = trial.norm();
+  if (size <= coulomb)
+    return trial;
+  const Vec3 sliding = trial * (coulomb / size);
+  spring = -sliding / step.stiffness;
+  return sliding;
+}
+
+}  // namespace partimix::dem
