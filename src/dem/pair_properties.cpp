@@ -23,14 +23,20 @@ double shear_compliance(const Material& m) {
 
 }  // namespace
 
+MaterialPair material_pair(const Material& a, const Material& b, double restitution) {
+  return {1.0 / (normal_compliance(a) + normal_compliance(b)),
+          1.0 / (shear_compliance(a) + shear_compliance(b)), damping_factor(restitution)};
+}
+
+PairProperties pair_properties(const MaterialPair& materials, double radius_a, double radius_b,
+                               double mass_a, double mass_b) {
+  return {1.0 / (1.0 / radius_a + 1.0 / radius_b), 1.0 / (1.0 / mass_a + 1.0 / mass_b),
+          materials.youngs_modulus, materials.shear_modulus, materials.damping};
+}
+
 PairProperties pair_properties(const ContactSide& a, const ContactSide& b, double restitution) {
-  PairProperties pair;
-  pair.radius = 1.0 / (1.0 / a.radius + 1.0 / b.radius);
-  pair.mass = 1.0 / (1.0 / a.mass + 1.0 / b.mass);
-  pair.youngs_modulus = 1.0 / (normal_compliance(a.material) + normal_compliance(b.material));
-  pair.shear_modulus = 1.0 / (shear_compliance(a.material) + shear_compliance(b.material));
-  pair.damping = damping_factor(restitution);
-  return pair;
+  return pair_properties(material_pair(a.material, b.material, restitution), a.radius, b.radius,
+                         a.mass, b.mass);
 }
 
 }  // namespace partimix::dem

@@ -24,8 +24,22 @@ struct PairProperties {
   double damping = 0.0;         // beta = -ln e / sqrt(pi^2 + ln^2 e), 0 for e = 1
 };
 
+// The parts of PairProperties that depend on the materials and the restitution alone: computed
+// once per pair of species (or species and wall), not per contact.
+struct MaterialPair {
+  double youngs_modulus = 0.0;  // E*
+  double shear_modulus = 0.0;   // G*
+  double damping = 0.0;         // beta
+};
+
 // beta of restitution e in (0, 1].
 double damping_factor(double restitution);
+
+MaterialPair material_pair(const Material& a, const Material& b, double restitution);
+
+// R* and m* of two sides (radius and mass may be +infinity for a wall) with the material pair.
+PairProperties pair_properties(const MaterialPair& materials, double radius_a, double radius_b,
+                               double mass_a, double mass_b);
 
 PairProperties pair_properties(const ContactSide& a, const ContactSide& b, double restitution);
 

@@ -1,0 +1,57 @@
+#pragma once
+// The history of each particle's contacts (docs/dem.md, "Tangential force"): the tangential and
+// rolling springs of every contact, kept per particle in a fixed number of slots so that a step
+// does not allocate. Both particles of a pair keep their own copy (each particle gathers the
+// forces on itself, DESIGN.md "Data and speed"), and the copies stay opposite to round-off. A
+// contact is known by its partner: a particle id (>= 0) or a wall, -(wall index + 1).
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "core/vec.hpp"
+
+namespace partimix::dem {
+
+struct ContactSlot {
+  std::int64_t partner = 0;
+  Vec3 spring = Vec3::Zero();          // xi [m]
+  Vec3 rolling_spring = Vec3::Zero();  // M_r^k of the elastic-plastic model [N m]
+};
+
+class ContactHistory {
+ public:
+  static constexpr int kMaxCapacity = 64;  // slots per particle; a bit each in a 64-bit mask
+
+  // Throws std::invalid_argument unless 1 <= capacity <= kMaxCapacity.
+  ContactHistory(std::size_t particles, int capacity);
+
+  static std::int64_t wall_partner(std::size_t wall) {
+    return -static_cast<std::int64_t>(wall) - 1;
+  }
+
+  int capacity() const { return capacity_; }
+  int count(std::size_t i) const { return counts_[i]; }
+
+  // The slot of i's contact with `partner`, a new zeroed one when there is none; -1 when i's
+  // slots are full.
+  int find_or_add(std::size_t i, std::int64_t partner);
+  ContactSlot& slot(std::size_t i, int k) { return slots_[i * capacity_ + k]; }
+
+  // Keeps the slots k of i with bit k of `touched` set (the contacts of this step), in order.
+  void retain(std::size_t i, std::uint64_t touched);
+
+  // Moves the slots with their particles: new particle k is old particle new_to_old[k]. Reuses
+  // a scratch buffer, so it does not allocate once that has grown.
+  void reorder(std::span<const std::uint32_t> new_to_old);
+
+  std::size_t bytes() const;
+
+ private:
+  int capacity_;
+  std::vector<ContactSlot> slots_;
+  std::vector<std::uint8_t> counts_;
+  std::vector<ContactSlot> scratch_slots_;
+  std::vector<std::uint8_t> scratch_counts_;
+};
+
+}  // namespace partimix::dem

@@ -1,0 +1,317 @@
+#include "dem/dem_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+#include <Eigen/Geometry>
+
+#include "core/error.hpp"
+#include "dem/tangential_contact.hpp"
+#include "dem/time_step.hpp"
+
+namespace partimix::dem {
+
+namespace {
+
+InputError config_error(const std::string& key, const std::string& what) {
+  return InputError(InputLocation{"", 0, 0, key}, what);
+}
+
+double sphere_volume(double radius) {
+  return 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
+}
+
+// Slots for the contacts of one particle: the kissing number 12 scaled by the surface a sphere
+// of the largest radius offers to the smallest, ((1 + R_max/R_min) / 2)^2, plus one per wall.
+int contact_capacity(double smallest, double largest, std::size_t walls) {
+  const double ratio = largest / smallest;
+  const double particles = std::ceil(12.0 * std::pow(0.5 * (1.0 + ratio), 2) - 1e-9);
+  return static_cast<int>(
+      std::min<double>(particles + static_cast<double>(walls), ContactHistory::kMaxCapacity));
+}
+
+}  // namespace
+
+// One contact as particle i sees it: unit normal n from the partner to i, overlap, the relative
+// velocity of the contact point, and what the partner is.
+struct DemSolver::Contact {
+  std::int64_t partner = 0;
+  Vec3 normal = Vec3::Zero();
+  double overlap = 0.0;
+  Vec3 contact_velocity = Vec3::Zero();
+  Vec3 relative_angular_velocity = Vec3::Zero();
+  PairProperties pair;
+  const Interaction* interaction = nullptr;
+  double rolling_inertia = 0.0;
+};
+
+DemSolver::DemSolver(ParticleStore& store, const Domain& domain, const Config& config,
+                     const Vec3& gravity, const Grains& grains)
+    : store_(store), domain_(domain), config_(config), gravity_(gravity) {
+  normal_law_ = normal_contact_registry().create(config.normal_law,
+                                                 NormalLawParameters{config.linear_stiffness});
+  if (!normal_law_)
+    throw config_error("dem.normal_law", "unknown normal contact law '" + config.normal_law + "'");
+  if (config.normal_law == "linear" && !(config.linear_stiffness > 0.0))
+    throw config_error("dem.linear_stiffness", "the linear law needs a stiffness > 0");
+  rolling_ = rolling_resistance_registry().create(config.rolling_resistance,
+                                                  RollingParameters{config.rolling_damping});
+  if (!rolling_) {
+    throw config_error("dem.rolling_resistance",
+                       "unknown rolling resistance model '" + config.rolling_resistance + "'");
+  }
+  add_fields(grains);
+  make_walls();
+  compute_time_step();
+  const auto [smallest, largest] = std::minmax_element(radius_->begin(), radius_->end());
+  largest_radius_ = *largest;
+  grid_ = std::make_unique<CellGrid>(domain_, 2.0 * largest_radius_);
+  history_ = std::make_unique<ContactHistory>(
+      store_.size(), contact_capacity(*smallest, *largest, config_.walls.size()));
+  sort_by_cell();
+  compute_loads(0.0);
+}
+
+void DemSolver::add_fields(const Grains& grains) {
+  radius_ = &store_.add_scalar("radius", "m").values;
+  species_ = &store_.add_integer("species", "").values;
+  angular_velocity_ = &store_.add_vector("angular_velocity", "rad/s").values;
+  force_ = &store_.add_vector("force", "N", false).values;
+  torque_ = &store_.add_vector("torque", "N m", false).values;
+  orientation_w_ = &store_.add_scalar("orientation_w", "", false).values;
+  orientation_v_ = &store_.add_vector("orientation_v", "", false).values;
+  const std::size_t count = grains.position.size();
+  if (count == 0)
+    throw config_error("dem", "there are no grains");
+  store_.resize(count);
+  const int species_count = static_cast<int>(config_.species.size());
+  for (std::size_t i = 0; i < count; ++i) {
+    const int s = grains.species[i];
+    if (s < 0 || s >= species_count)
+      throw config_error("dem.species", fmt::format("grain {} has no species {}", i, s));
+    store_.id()[i] = static_cast<std::int64_t>(i);
+    store_.kind()[i] = static_cast<std::int32_t>(ParticleKind::grain);
+    store_.position()[i] = grains.position[i];
+    (*radius_)[i] = grains.radius[i];
+    (*species_)[i] = s;
+    store_.mass()[i] = config_.species[s].density * sphere_volume(grains.radius[i]);
+    (*orientation_w_)[i] = 1.0;
+  }
+}
+
+void DemSolver::make_walls() {
+  const std::size_t n = config_.species.size();
+  particle_materials_.resize(n * n);
+  for (std::size_t a = 0; a < n; ++a) {
+    for (std::size_t b = 0; b < n; ++b) {
+      particle_materials_[a * n + b] =
+          material_pair(config_.species[a].material, config_.species[b].material,
+                        config_.particle_interactions[a * n + b].restitution);
+    }
+  }
+  for (std::size_t w = 0; w < config_.walls.size(); ++w) {
+    const WallConfig& wall = config_.walls[w];
+    auto motion = geometry::motion_registry().create(wall.motion.type, wall.motion);
+    if (!motion) {
+      throw config_error(fmt::format("walls[{}].motion.type", w),
+                         "unknown motion '" + wall.motion.type + "'");
+    }
+    walls_.push_back({wall.surface.get(), std::move(motion), {}});
+    walls_.back().pose = walls_.back().motion->pose(0.0);
+    for (std::size_t a = 0; a < n; ++a) {
+      wall_materials_.push_back(material_pair(config_.species[a].material, wall.material,
+                                              config_.wall_interactions[a].restitution));
+    }
+  }
+}
+
+// dt = f min over the grains of t_R (hertz) or f times the linear contact time of the lightest.
+void DemSolver::compute_time_step() {
+  rayleigh_time_ = std::numeric_limits<double>::infinity();
+  double lightest = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < store_.size(); ++i) {
+    const Species& s = config_.species[(*species_)[i]];
+    rayleigh_time_ = std::min(rayleigh_time_, rayleigh_time((*radius_)[i], s.density, s.material));
+    lightest = std::min(lightest, store_.mass()[i]);
+  }
+  const double scale = config_.normal_law == "linear"
+                           ? linear_contact_time(lightest, config_.linear_stiffness)
+                           : rayleigh_time_;
+  time_step_ = config_.rayleigh_fraction * scale;
+}
+
+void DemSolver::step(double dt) {
+  half_kick(dt);
+  drift(dt);
+  time_ += dt;
+  if (++steps_ % config_.sort_interval == 0)
+    sort_by_cell();
+  for (WallState& wall : walls_)
+    wall.pose = wall.motion->pose(time_);
+  compute_loads(dt);
+  half_kick(dt);
+}
+
+void DemSolver::half_kick(double dt) {
+  auto& v = store_.velocity();
+  const auto& m = store_.mass();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < store_.size(); ++i) {
+    v[i] += 0.5 * dt / m[i] * (*force_)[i];
+    const double inertia = 0.4 * m[i] * (*radius_)[i] * (*radius_)[i];
+    (*angular_velocity_)[i] += 0.5 * dt / inertia * (*torque_)[i];
+  }
+}
+
+// Positions, and orientations turned by |omega| dt about omega (exact for a constant omega).
+void DemSolver::drift(double dt) {
+  auto& x = store_.position();
+  const auto& v = store_.velocity();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < store_.size(); ++i) {
+    x[i] += dt * v[i];
+    domain_.wrap(x[i]);
+    const Vec3& w = (*angular_velocity_)[i];
+    const double angle = w.norm() * dt;
+    if (angle > 0.0) {
+      const Eigen::Quaterniond turn(Eigen::AngleAxisd(angle, w.normalized()));
+      Eigen::Quaterniond q((*orientation_w_)[i], (*orientation_v_)[i].x(), (*orientation_v_)[i].y(),
+                           (*orientation_v_)[i].z());
+      q = (turn * q).normalized();
+      (*orientation_w_)[i] = q.w();
+      (*orientation_v_)[i] = q.vec();
+    }
+  }
+}
+
+void DemSolver::sort_by_cell() {
+  grid_->build(store_.position());
+  const auto order = grid_->cell_order();
+  sort_order_.assign(order.begin(), order.end());
+  store_.reorder(sort_order_);
+  history_->reorder(sort_order_);
+}
+
+void DemSolver::compute_loads(double dt) {
+  grid_->build(store_.position());
+  bool overflow = false;
+#pragma omp parallel for schedule(dynamic, 256) reduction(|| : overflow)
+  for (std::size_t i = 0; i < store_.size(); ++i)
+    loads_on(i, dt, overflow);
+  if (overflow) {
+    throw RunError(
+        fmt::format("a grain has more than {} contacts at once (the slots of its "
+                    "contact history); the grains overlap far too much: check the "
+                    "time step and the stiffness",
+                    history_->capacity()));
+  }
+}
+
+void DemSolver::loads_on(std::size_t i, double dt, bool& overflow) {
+  const auto& x = store_.position();
+  const auto& v = store_.velocity();
+  const auto& m = store_.mass();
+  const auto& id = store_.id();
+  const auto& radius = *radius_;
+  const auto& omega = *angular_velocity_;
+  const std::size_t n_species = config_.species.size();
+  const int s_i = (*species_)[i];
+  const double inertia_i = 1.4 * m[i] * radius[i] * radius[i];  // about the contact point
+  (*force_)[i] = m[i] * gravity_;
+  (*torque_)[i] = Vec3::Zero();
+  std::uint64_t touched = 0;
+  auto add = [&](Contact& contact) {
+    const int k = history_->find_or_add(i, contact.partner);
+    if (k < 0) {
+      overflow = true;
+      return;
+    }
+    touched |= std::uint64_t{1} << k;
+    apply(i, contact, history_->slot(i, k), dt);
+  };
+  grid_->for_each_neighbour(i, x, [&](std::size_t j, const Vec3& rij, double r2) {
+    const double reach = radius[i] + radius[j];
+    if (j == i || r2 >= reach * reach)
+      return;
+    const double distance = std::sqrt(r2);
+    Contact c;
+    c.partner = id[j];
+    c.normal = rij / distance;
+    c.overlap = reach - distance;
+    const double lever_i = radius[i] - 0.5 * c.overlap;
+    const double lever_j = radius[j] - 0.5 * c.overlap;
+    c.contact_velocity =
+        v[i] - v[j] - lever_i * omega[i].cross(c.normal) - lever_j * omega[j].cross(c.normal);
+    c.relative_angular_velocity = omega[i] - omega[j];
+    const std::size_t pair = s_i * n_species + (*species_)[j];
+    c.pair = pair_properties(particle_materials_[pair], radius[i], radius[j], m[i], m[j]);
+    c.interaction = &config_.particle_interactions[pair];
+    const double inertia_j = 1.4 * m[j] * radius[j] * radius[j];
+    c.rolling_inertia = 1.0 / (1.0 / inertia_i + 1.0 / inertia_j);
+    add(c);
+  });
+  for (std::size_t w = 0; w < walls_.size(); ++w) {
+    const geometry::RigidPose& pose = walls_[w].pose;
+    const Vec3 local = pose.rotation.transpose() * (x[i] - pose.origin) + pose.start_origin;
+    SurfacePoint surface;
+    if (!walls_[w].surface->nearest(local, radius[i], surface) || surface.gap >= radius[i])
+      continue;
+    Contact c;
+    c.partner = ContactHistory::wall_partner(w);
+    c.normal = pose.rotation * surface.normal;
+    c.overlap = radius[i] - surface.gap;
+    const Vec3 point = pose.place(surface.point);
+    const double lever_i = radius[i] - 0.5 * c.overlap;
+    c.contact_velocity = v[i] - pose.velocity_at(point) - lever_i * omega[i].cross(c.normal);
+    c.relative_angular_velocity = omega[i] - pose.angular_velocity;
+    c.pair = pair_properties(wall_materials_[w * n_species + s_i], radius[i],
+                             std::numeric_limits<double>::infinity(), m[i],
+                             std::numeric_limits<double>::infinity());
+    c.interaction = &config_.wall_interactions[s_i];
+    c.rolling_inertia = inertia_i;
+    add(c);
+  }
+  history_->retain(i, touched);
+}
+
+// The normal, tangential and rolling loads of one contact on particle i (docs/dem.md).
+void DemSolver::apply(std::size_t i, const Contact& c, ContactSlot& slot, double dt) {
+  const double u_n = c.contact_velocity.dot(c.normal);
+  const double normal_force = normal_law_->force(c.pair, c.overlap, u_n);
+  const Interaction& with = *c.interaction;
+  TangentialStep tangential{normal_law_->tangential_stiffness(c.pair, c.overlap),
+                            normal_force,
+                            c.normal,
+                            c.contact_velocity - u_n * c.normal,
+                            with.friction,
+                            dt};
+  if (config_.seed_tangential_cap)
+    tangential.spring_cap = seed_spring_cap(c.pair, with.friction, c.overlap);
+  const Vec3 f_t = tangential_force(c.pair, tangential, slot.spring);
+  const RollingStep rolling{normal_force,
+                            normal_law_->normal_stiffness(c.pair, c.overlap),
+                            c.pair.radius,
+                            c.rolling_inertia,
+                            c.normal,
+                            c.relative_angular_velocity,
+                            with.rolling_friction,
+                            dt};
+  const double lever = (*radius_)[i] - 0.5 * c.overlap;
+  (*force_)[i] += normal_force * c.normal + f_t;
+  (*torque_)[i] += (-lever * c.normal).cross(f_t) + rolling_->torque(rolling, slot.rolling_spring);
+}
+
+std::map<std::string, double> DemSolver::derived_parameters() const {
+  return {{"rayleigh_time [s]", rayleigh_time_},
+          {"time_step [s]", time_step_},
+          {"largest_radius [m]", largest_radius_},
+          {"contact_slots [-]", static_cast<double>(history_->capacity())}};
+}
+
+std::size_t DemSolver::bytes() const {
+  return store_.bytes() + grid_->bytes() + history_->bytes();
+}
+
+}  // namespace partimix::dem

@@ -1,0 +1,85 @@
+#pragma once
+// DEM for spheres (docs/dem.md): Hertz-Mindlin (or linear) contacts with history, rolling
+// resistance, moving walls, periodic axes, velocity Verlet at a fraction of the Rayleigh time.
+// Each particle gathers the loads on itself from its contacts (DESIGN.md, "Data and speed"), so
+// every pair is evaluated from both sides and the result does not depend on the thread count.
+#include <memory>
+#include <string_view>
+#include <vector>
+
+#include "dem/config.hpp"
+#include "dem/contact_history.hpp"
+#include "dem/normal_contact.hpp"
+#include "dem/rolling_resistance.hpp"
+#include "geometry/motion.hpp"
+#include "particles/cell_grid.hpp"
+#include "particles/solver.hpp"
+
+namespace partimix::dem {
+
+class DemSolver final : public Solver {
+ public:
+  // Fills `store` (empty) with `grains` as particles of kind grain, adds the fields radius,
+  // species, angular_velocity, force, torque and the orientation quaternion, and sets the
+  // masses from the species' densities. Throws InputError (key path "dem...") when the
+  // configuration cannot be used.
+  DemSolver(ParticleStore& store, const Domain& domain, const Config& config, const Vec3& gravity,
+            const Grains& grains);
+
+  std::string_view name() const override { return "dem"; }
+  const ParticleStore& particles() const override { return store_; }
+  const Domain& domain() const override { return domain_; }
+  double stable_dt() const override { return time_step_; }
+  void step(double dt) override;
+  std::map<std::string, double> derived_parameters() const override;
+
+  // The walls' motions start over at t = 0 (after settling, before the run proper).
+  void reset_time() { time_ = 0.0; }
+  double time() const { return time_; }
+  std::size_t bytes() const;
+
+ private:
+  struct WallState {
+    const WallSurface* surface = nullptr;
+    std::unique_ptr<geometry::Motion> motion;
+    geometry::RigidPose pose;
+  };
+  struct Contact;
+
+  void add_fields(const Grains& grains);
+  void make_walls();
+  void compute_time_step();
+  void half_kick(double dt);
+  void drift(double dt);
+  void sort_by_cell();
+  void compute_loads(double dt);
+  void loads_on(std::size_t i, double dt, bool& overflow);
+  void apply(std::size_t i, const Contact& contact, ContactSlot& slot, double dt);
+
+  ParticleStore& store_;
+  Domain domain_;
+  Config config_;
+  Vec3 gravity_;
+  std::unique_ptr<NormalContactLaw> normal_law_;
+  std::unique_ptr<RollingResistance> rolling_;
+  std::vector<MaterialPair> particle_materials_;  // by species pair, as the interactions
+  std::vector<MaterialPair> wall_materials_;      // by wall * species + species
+  std::vector<WallState> walls_;
+  std::vector<double>* radius_ = nullptr;
+  std::vector<std::int32_t>* species_ = nullptr;
+  std::vector<Vec3>* angular_velocity_ = nullptr;
+  std::vector<Vec3>* force_ = nullptr;
+  std::vector<Vec3>* torque_ = nullptr;
+  std::vector<double>* orientation_w_ = nullptr;
+  std::vector<Vec3>* orientation_v_ = nullptr;
+  std::unique_ptr<CellGrid> grid_;
+  std::unique_ptr<ContactHistory> history_;
+  std::vector<std::uint32_t> sort_order_;
+  double largest_radius_ = 0.0;
+  double rayleigh_time_ = 0.0;
+  double time_step_ = 0.0;
+  double time_ = 0.0;
+  long steps_ = 0;
+};
+
+}  // namespace partimix::dem

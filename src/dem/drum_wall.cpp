@@ -1,0 +1,17 @@
+#include "dem/drum_wall.hpp"
+
+namespace partimix::dem {
+
+bool DrumWall::nearest(const Vec3& centre, double reach, SurfacePoint& out) const {
+  const Vec3 offset = centre - axis_point_;
+  const Vec3 radial = offset - offset.dot(axis_) * axis_;
+  const double r = radial.norm();
+  const double gap = radius_ - r;
+  if (gap > reach || r == 0.0)
+    return false;
+  const Vec3 outward = radial / r;
+  out = {centre + gap * outward, -outward, gap};
+  return true;
+}
+
+}  // namespace partimix::dem
