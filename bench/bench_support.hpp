@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "app/simulation.hpp"
 #include "io/case.hpp"
@@ -49,17 +50,23 @@ inline void report(benchmark::State& state, const ParticleStore& store) {
 
 constexpr int warm_up_steps = 20;
 
-// state.range(0): the number of OpenMP threads; case_name: a file of cases/ without ".yaml".
-inline void time_steps(benchmark::State& state, const std::string& case_name, double spacing) {
+// state.range(0): the number of OpenMP threads; case_name: a file of cases/ without ".yaml",
+// built with `overrides` (as --set). Returns the simulation after the timed steps.
+inline app::Simulation time_steps(benchmark::State& state, const std::string& case_name,
+                                  const std::vector<std::string>& overrides) {
   omp_set_num_threads(static_cast<int>(state.range(0)));
   const std::string path = std::string(PARTIMIX_SOURCE_DIR) + "/cases/" + case_name + ".yaml";
-  app::Simulation simulation =
-      app::build_simulation(io::load_case(path, {"sph.spacing=" + std::to_string(spacing)}));
+  app::Simulation simulation = app::build_simulation(io::load_case(path, overrides));
   for (int k = 0; k < warm_up_steps; ++k)
     step(*simulation.solver);
   for (auto _ : state)
     step(*simulation.solver);
   report(state, *simulation.store);
+  return simulation;
+}
+
+inline void time_steps(benchmark::State& state, const std::string& case_name, double spacing) {
+  time_steps(state, case_name, {"sph.spacing=" + std::to_string(spacing)});
 }
 
 inline void configure(benchmark::internal::Benchmark* benchmark) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/bed_options.hpp"
 #include "analysis/sampling_cells.hpp"
 #include "core/registry.hpp"
 #include "geometry/motion.hpp"
@@ -54,10 +55,14 @@ struct AnalysisOptions {
   double diameter = 0.0;       // power_number: impeller diameter d_a (d_R) [m]
   double metzner_otto = 7.54;  // power_number: K of the Metzner-Otto shear rate K N [-]
   FlowScales fluid;
-  MixingRegion mixing;  // mixing: the sampling cells
+  MixingRegion mixing;   // mixing: the sampling cells
+  PackingBox packing;    // packing_fraction
+  ProfileLine profile;   // velocity_profile
+  ReposeSection repose;  // angle_of_repose
 };
 
-// Analyses a case file may ask for, by name: front_position, body_loads, power_number, mixing.
+// Analyses a case file may ask for, by name: front_position, body_loads, power_number, mixing,
+// packing_fraction, velocity_profile, angle_of_repose.
 // (Kinetic energy and the largest speed are always sampled.)
 const Registry<Analysis, const AnalysisOptions&>& analysis_registry();
 

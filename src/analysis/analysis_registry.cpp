@@ -1,8 +1,11 @@
 #include "analysis/analysis.hpp"
+#include "analysis/angle_of_repose.hpp"
 #include "analysis/body_loads.hpp"
 #include "analysis/front_position.hpp"
 #include "analysis/mixing.hpp"
+#include "analysis/packing_fraction.hpp"
 #include "analysis/power_number.hpp"
+#include "analysis/velocity_profile.hpp"
 
 namespace partimix::analysis {
 
@@ -16,6 +19,12 @@ const Registry<Analysis, const AnalysisOptions&>& analysis_registry() {
     r.add("mixing", [](const AnalysisOptions& o) { return std::make_unique<Mixing>(o.mixing); });
     r.add("power_number",
           [](const AnalysisOptions& o) { return std::make_unique<PowerNumber>(o); });
+    r.add("packing_fraction",
+          [](const AnalysisOptions& o) { return std::make_unique<PackingFraction>(o.packing); });
+    r.add("velocity_profile",
+          [](const AnalysisOptions& o) { return std::make_unique<VelocityProfile>(o.profile); });
+    r.add("angle_of_repose",
+          [](const AnalysisOptions& o) { return std::make_unique<AngleOfRepose>(o.repose); });
     return r;
   }();
   return registry;

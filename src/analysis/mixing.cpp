@@ -1,11 +1,18 @@
 #include "analysis/mixing.hpp"
 
+#include "analysis/mixing_rate.hpp"
+
 namespace partimix::analysis {
 
 Mixing::Mixing(const MixingRegion& region)
-    : cells_(make_sampling_cells(region)), min_count_(region.min_count), counts_(*cells_) {}
+    : cells_(make_sampling_cells(region)), min_count_(region.min_count), counts_(*cells_) {
+  // The history grows by one entry per sample (not per step); this covers a usual run.
+  constexpr std::size_t kExpectedSamples = 1024;
+  times_.reserve(kExpectedSamples);
+  laceys_.reserve(kExpectedSamples);
+}
 
-void Mixing::sample(const ParticleStore& particles, double /*time*/, std::span<double> values) {
+void Mixing::sample(const ParticleStore& particles, double time, std::span<double> values) {
   roles_.resize(particles.size());
   for (std::size_t i = 0; i < particles.size(); ++i) {
     if (!particles.is_material(i))
@@ -18,11 +25,26 @@ void Mixing::sample(const ParticleStore& particles, double /*time*/, std::span<d
   last_lacey_ = lacey_index(counts_, min_count_).index;
   values[0] = last_xi_;
   values[1] = last_lacey_;
+  times_.push_back(time);
+  laceys_.push_back(last_lacey_);
 }
 
 void Mixing::add_figures(std::map<std::string, double>& figures) const {
   figures["xi_final"] = last_xi_;
   figures["lacey_final"] = last_lacey_;
+  for (const MixingModel model :
+       {MixingModel::exponential, MixingModel::error_function, MixingModel::diffusive}) {
+    const MixingRateFit fit = fit_mixing_rate(times_, laceys_, model);
+    if (fit.status != MixingFitStatus::ok)
+      continue;  // too few samples, or nothing to fit: no figures rather than NaN ones
+    const std::string suffix = mixing_model_suffix(model);
+    auto name = [&suffix](const char* stem) { return std::string(stem).append(suffix); };
+    figures[name("lacey_rate_")] = fit.rate;
+    figures[name("lacey_initial_")] = fit.initial;
+    figures[name("lacey_plateau_")] = fit.plateau;
+    figures[name("lacey_fit_r2_")] = fit.r_squared;
+    figures[name("lacey_fit_rms_")] = fit.rms;
+  }
 }
 
 }  // namespace partimix::analysis

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "app/dem_simulation.hpp"
 #include "core/error.hpp"
 #include "geometry/lattice.hpp"
 #include "sph/kernel.hpp"
@@ -159,6 +160,8 @@ void tag_tracer(const io::Case& the_case, ParticleStore& store) {
 }  // namespace
 
 Simulation build_simulation(const io::Case& the_case) {
+  if (the_case.solver == "dem")
+    return build_dem_simulation(the_case);
   Simulation simulation;
   simulation.store = std::make_unique<ParticleStore>();
   simulation.bodies = generate_particles(the_case, wall_layers_for(the_case.sph), *simulation.store,

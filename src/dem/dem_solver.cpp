@@ -32,6 +32,13 @@ int contact_capacity(double smallest, double largest, std::size_t walls) {
       std::min<double>(particles + static_cast<double>(walls), ContactHistory::kMaxCapacity));
 }
 
+// The pose held still: no velocity.
+geometry::RigidPose at_rest(geometry::RigidPose pose) {
+  pose.velocity = Vec3::Zero();
+  pose.angular_velocity = Vec3::Zero();
+  return pose;
+}
+
 }  // namespace
 
 // One contact as particle i sees it: unit normal n from the partner to i, overlap, the relative
@@ -119,7 +126,7 @@ void DemSolver::make_walls() {
                          "unknown motion '" + wall.motion.type + "'");
     }
     walls_.push_back({wall.surface.get(), std::move(motion), {}});
-    walls_.back().pose = walls_.back().motion->pose(0.0);
+    walls_.back().pose = at_rest(walls_.back().motion->pose(0.0));
     for (std::size_t a = 0; a < n; ++a) {
       wall_materials_.push_back(material_pair(config_.species[a].material, wall.material,
                                               config_.wall_interactions[a].restitution));
@@ -149,7 +156,7 @@ void DemSolver::step(double dt) {
   if (++steps_ % config_.sort_interval == 0)
     sort_by_cell();
   for (WallState& wall : walls_)
-    wall.pose = wall.motion->pose(time_);
+    wall.pose = walls_frozen_ ? at_rest(wall.motion->pose(0.0)) : wall.motion->pose(time_);
   compute_loads(dt);
   half_kick(dt);
 }
@@ -303,11 +310,31 @@ void DemSolver::apply(std::size_t i, const Contact& c, ContactSlot& slot, double
   (*torque_)[i] += (-lever * c.normal).cross(f_t) + rolling_->torque(rolling, slot.rolling_spring);
 }
 
+void DemSolver::set_species(std::size_t i, int species) {
+  (*species_)[i] = species;
+  store_.tag()[i] = species;
+  store_.mass()[i] = config_.species[species].density * sphere_volume((*radius_)[i]);
+}
+
+void DemSolver::record_settling(double time, double kinetic_energy_per_grain) {
+  settle_time_ = time;
+  settle_energy_ = kinetic_energy_per_grain;
+}
+
 std::map<std::string, double> DemSolver::derived_parameters() const {
-  return {{"rayleigh_time [s]", rayleigh_time_},
+  return {{"settle_time [s]", settle_time_},
+          {"settle_kinetic_energy_per_grain [J]", settle_energy_},
+          {"rayleigh_time [s]", rayleigh_time_},
           {"time_step [s]", time_step_},
           {"largest_radius [m]", largest_radius_},
           {"contact_slots [-]", static_cast<double>(history_->capacity())}};
+}
+
+double DemSolver::mean_contacts() const {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < store_.size(); ++i)
+    sum += history_->count(i);
+  return sum / static_cast<double>(store_.size());
 }
 
 std::size_t DemSolver::bytes() const {

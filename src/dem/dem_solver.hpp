@@ -33,10 +33,19 @@ class DemSolver final : public Solver {
   void step(double dt) override;
   std::map<std::string, double> derived_parameters() const override;
 
+  // While frozen the walls stay where their motions put them at t = 0 (settling).
+  void freeze_walls(bool frozen) { walls_frozen_ = frozen; }
   // The walls' motions start over at t = 0 (after settling, before the run proper).
   void reset_time() { time_ = 0.0; }
   double time() const { return time_; }
+  // Gives grain i species s (and the same tag, so species 1 is the mixing tracer), with the
+  // mass of its density.
+  void set_species(std::size_t i, int species);
+  // Records the settling before the run (for run.json).
+  void record_settling(double time, double kinetic_energy_per_grain);
   std::size_t bytes() const;
+  // Contacts (with grains and walls) per grain, at the last step.
+  double mean_contacts() const;
 
  private:
   struct WallState {
@@ -80,6 +89,9 @@ class DemSolver final : public Solver {
   double time_step_ = 0.0;
   double time_ = 0.0;
   long steps_ = 0;
+  bool walls_frozen_ = false;
+  double settle_time_ = 0.0;
+  double settle_energy_ = 0.0;
 };
 
 }  // namespace partimix::dem

@@ -12,7 +12,9 @@
 namespace partimix::io {
 namespace {
 
-const std::vector<std::string> kTypes{"front_position", "body_loads", "power_number", "mixing"};
+const std::vector<std::string> kTypes{"front_position", "body_loads",       "power_number",
+                                      "mixing",         "packing_fraction", "velocity_profile",
+                                      "angle_of_repose"};
 
 // body, vessel_axis_point and average_revolutions of body_loads and power_number.
 void read_body(Reader& item, AnalysisSpec& analysis, int dimensions,
@@ -112,6 +114,69 @@ void read_mixing(Reader& item, AnalysisSpec& analysis, int dimensions, const Flu
   region.min_count = item.optional<int>("min_count", region.min_count, at_least(1));
 }
 
+// packing_fraction: the box [min, max].
+void read_packing_fraction(Reader& item, AnalysisSpec& analysis, int dimensions) {
+  analysis.packing.lo = item.vector("min", dimensions);
+  analysis.packing.hi = item.vector("max", dimensions);
+  for (int k = 0; k < dimensions; ++k) {
+    if (!(analysis.packing.hi[k] > analysis.packing.lo[k]))
+      throw item.error("max", "max must exceed min along every axis");
+  }
+}
+
+// velocity_profile: the segment [start, end], bins, width and the component (a direction or the
+// word speed).
+void read_velocity_profile(Reader& item, AnalysisSpec& analysis, int dimensions) {
+  constexpr int kMostBins = 1000;  // one series.csv column each
+  analysis::ProfileLine& line = analysis.profile;
+  line.start = item.vector("start", dimensions);
+  line.end = item.vector("end", dimensions);
+  if (line.end == line.start)
+    throw item.error("end", "end must differ from start");
+  line.bins = item.optional<int>("bins", line.bins, at_least(1));
+  if (line.bins > kMostBins)
+    throw item.error("bins", fmt::format("at most {} bins", kMostBins));
+  line.width = item.required<double>("width", kPositive);
+  const std::string expected = fmt::format(
+      "expected the word speed or a direction (a list of {} numbers, not all zero)", dimensions);
+  try {
+    item.choice("component", "speed", {"speed"});  // absent: the speed
+    line.speed = true;
+    return;
+  } catch (const InputError&) {
+    // not the word speed: a direction, or an error
+  }
+  try {
+    line.direction = item.vector("component", dimensions);
+  } catch (const InputError&) {
+    throw item.error("component", expected);
+  }
+  if (line.direction.norm() == 0.0)
+    throw item.error("component", expected);
+  line.speed = false;
+  line.direction.normalize();
+}
+
+// angle_of_repose: the drum axis (3D; z in 2D) through centre, gravity's direction, bins, trim.
+void read_angle_of_repose(Reader& item, AnalysisSpec& analysis, int dimensions) {
+  analysis::ReposeSection& section = analysis.repose;
+  if (dimensions == 3) {
+    section.axis = item.vector("axis", 3, Vec3::UnitZ());
+    if (section.axis.norm() == 0.0)
+      throw item.error("axis", "the axis must not be the zero vector");
+  }
+  section.centre = item.vector("centre", dimensions, Vec3::Zero());
+  section.down = item.vector("down", dimensions, -Vec3::UnitY());
+  const Vec3 axis = section.axis.normalized();
+  const Vec3 normal_part = section.down - section.down.dot(axis) * axis;
+  if (!(normal_part.norm() > 1.0e-9 * section.down.norm()))
+    throw item.error("down", "down must not be zero or parallel to the axis");
+  section.bins = item.optional<int>("bins", section.bins, at_least(2));
+  section.trim = item.optional<double>("trim", section.trim, kNonNegative);
+  if (!(section.trim < 0.5))
+    throw item.error("trim", "trim must be below 0.5 (it is dropped at each end)");
+}
+
 }  // namespace
 
 std::vector<AnalysisSpec> read_analyses(Reader& root, int dimensions,
@@ -129,6 +194,12 @@ std::vector<AnalysisSpec> read_analyses(Reader& root, int dimensions,
       read_power_number(item, analysis, walls, fluid);
     if (analysis.type == "mixing")
       read_mixing(item, analysis, dimensions, fluid);
+    if (analysis.type == "packing_fraction")
+      read_packing_fraction(item, analysis, dimensions);
+    if (analysis.type == "velocity_profile")
+      read_velocity_profile(item, analysis, dimensions);
+    if (analysis.type == "angle_of_repose")
+      read_angle_of_repose(item, analysis, dimensions);
     item.done();
     analyses.push_back(analysis);
   }

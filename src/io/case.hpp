@@ -8,11 +8,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include "analysis/bed_options.hpp"
 #include "analysis/sampling_cells.hpp"
 #include "core/vec.hpp"
 #include "geometry/lattice.hpp"
 #include "geometry/motion.hpp"
 #include "geometry/shape.hpp"
+#include "io/dem_section.hpp"
 #include "particles/domain.hpp"
 #include "sph/config.hpp"
 #include "sph/rheology.hpp"
@@ -58,6 +60,8 @@ struct OutputSpec {
 // front_position: the largest coordinate of any fluid particle along `axis` (dam break).
 // body_loads, power_number: the load on wall `body` and its power and Reynolds numbers
 // (docs/power.md). mixing: uniformity and Lacey indices of the tracer (docs/mixing.md).
+// packing_fraction, velocity_profile, angle_of_repose: measurements of a granular bed
+// (docs/mixing.md, "Measurements of a granular bed").
 struct AnalysisSpec {
   std::string type;
   int axis = 0;
@@ -67,18 +71,22 @@ struct AnalysisSpec {
   double diameter = 0.0;
   double metzner_otto = 7.54;
   analysis::MixingRegion mixing;
+  analysis::PackingBox packing;    // packing_fraction
+  analysis::ProfileLine profile;   // velocity_profile
+  analysis::ReposeSection repose;  // angle_of_repose
 };
 
 struct Case {
   std::string file;  // path of the case file as given
   std::string name;
   std::string description;
-  std::string solver;  // sph
+  std::string solver;  // sph | dem
   Domain domain;       // with the number of dimensions
   Vec3 gravity = Vec3::Zero();
   TimeControl time;
   sph::Config sph;
-  FluidSpec fluid;
+  DemSpec dem;      // solver dem: the grains, their contacts and walls
+  FluidSpec fluid;  // solver dem: only the tracer, the split of dem.fill
   std::vector<WallSpec> walls;
   OutputSpec output;
   std::vector<AnalysisSpec> analyses;

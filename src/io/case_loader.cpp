@@ -8,6 +8,7 @@
 #include "io/analysis_section.hpp"
 #include "io/axis_names.hpp"
 #include "io/case.hpp"
+#include "io/motion_section.hpp"
 #include "io/overrides.hpp"
 #include "io/rheology_section.hpp"
 #include "io/shape_section.hpp"
@@ -154,34 +155,6 @@ FluidSpec read_fluid(Reader& root, int dimensions, const std::filesystem::path& 
   return fluid;
 }
 
-// The rotation axis: z in 2D (the plane's normal); in 3D any non-zero vector, normalised.
-Vec3 read_axis(Reader& section, int dimensions) {
-  if (dimensions == 2)
-    return Vec3::UnitZ();
-  const Vec3 axis = section.vector("axis", 3, Vec3::UnitZ());
-  if (axis.norm() == 0.0)
-    throw section.error("axis", "the axis must not be the zero vector");
-  return axis.normalized();
-}
-
-geometry::MotionConfig read_motion(Reader& item, int dimensions) {
-  Reader section = item.optional_map("motion");
-  geometry::MotionConfig motion;
-  motion.type = section.choice("type", motion.type, {"fixed", "rotation", "planetary"});
-  if (motion.type != "fixed") {
-    motion.axis = read_axis(section, dimensions);
-    motion.axis_point = section.vector("axis_point", dimensions, Vec3::Zero());
-    motion.rpm = section.required<double>("rpm");
-    motion.ramp_time = section.optional<double>("ramp_time", 0.0, kNonNegative);
-  }
-  if (motion.type == "planetary") {
-    motion.centre = section.vector("centre", dimensions, Vec3::Zero());
-    motion.revolution_rpm = section.required<double>("revolution_rpm");
-  }
-  section.done();
-  return motion;
-}
-
 // The faces of a container wall left open; a solid wall has none, so `open` is an error there.
 std::vector<geometry::Face> read_open_faces(Reader& item, int dimensions, bool solid) {
   if (solid && item.contains("open")) {
@@ -221,8 +194,10 @@ Case read_case(Reader& root, const std::string& path) {
   result.file = path;
   result.name = root.optional<std::string>("name", std::filesystem::path(path).stem().string());
   result.description = root.optional<std::string>("description", "");
-  result.solver = root.required_choice("solver", {"sph"});
+  result.solver = root.required_choice("solver", {"sph", "dem"});
   const int dimensions = read_dimensions(root);
+  if (result.solver == "dem" && dimensions != 3)
+    throw root.error("dimensions", "the DEM solver needs dimensions: 3");
   result.gravity = root.vector("gravity", dimensions, Vec3::Zero());
   result.domain = read_domain(root, dimensions);
   result.time = read_time(root);
@@ -230,8 +205,13 @@ Case read_case(Reader& root, const std::string& path) {
     result.sph = read_sph(root);
   }
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-  result.fluid = read_fluid(root, dimensions, folder);
-  result.walls = read_walls(root, dimensions, folder);
+  if (result.solver == "dem") {
+    result.dem = read_dem(root, folder);
+    result.fluid.tracer = TracerPlane{result.dem.fill.split_point, result.dem.fill.split_normal};
+  } else {
+    result.fluid = read_fluid(root, dimensions, folder);
+    result.walls = read_walls(root, dimensions, folder);
+  }
   result.output = read_output(root);
   result.analyses = read_analyses(root, dimensions, result.walls, result.fluid);
   root.done();

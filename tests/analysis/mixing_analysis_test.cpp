@@ -2,7 +2,7 @@
 // particles outside the region count nowhere, and xi and the Lacey index of a 2D disc cut into
 // two half-disc sectors (and of a box cut into halves) take the values worked out by hand for a
 // segregated and a mixed state; min_count reaches the Lacey index; the summary holds the last
-// values.
+// values and the mixing-rate fits of the sampled Lacey index.
 #include "analysis/mixing.hpp"
 
 #include <gtest/gtest.h>
@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/mixing_rate.hpp"
 #include "load_fixtures.hpp"
 
 namespace partimix::analysis {
@@ -126,7 +127,46 @@ TEST(MixingAnalysis, FiguresAreTheLastValues) {
   mixing.add_figures(figures);
   EXPECT_NEAR(figures.at("xi_final"), 0.0, kTight);
   EXPECT_NEAR(figures.at("lacey_final"), 4.0 / 3.0, kTight);
+  // Two samples are too few for a mixing-rate fit: it adds no figures (run.json's figures stay
+  // finite).
   EXPECT_EQ(figures.size(), 2u);
+}
+
+TEST(MixingAnalysis, MixingRateFiguresFitTheSampledLaceyIndex) {
+  // Samples at t = 0 (segregated, M = -4/3), 1, 2, 3, 4 (mixed, M = 4/3) and a state with no
+  // tracer at t = 5 (M NaN, skipped): the figures are the fits of these (t, M) pairs.
+  Mixing mixing(half_discs());
+  ParticleStore segregated;
+  fill(segregated, {0, 0, 0, 0}, {1, 1, 1, 1});
+  ParticleStore mixed;
+  fill(mixed, {1, 0, 1, 0}, {0, 1, 0, 1});
+  ParticleStore untagged;
+  fill(untagged, {0, 0, 0, 0}, {0, 0, 0, 0});
+  sample_once(mixing, segregated, 0.0);
+  for (const double t : {1.0, 2.0, 3.0, 4.0})
+    sample_once(mixing, mixed, t);
+  EXPECT_TRUE(std::isnan(sample_once(mixing, untagged, 5.0)[1]));
+  std::map<std::string, double> figures;
+  mixing.add_figures(figures);
+  EXPECT_EQ(figures.size(), 17u);  // xi_final, lacey_final and 5 for each of 3 models
+  const std::vector<double> times{0, 1, 2, 3, 4};
+  const std::vector<double> laceys{-4.0 / 3.0, 4.0 / 3.0, 4.0 / 3.0, 4.0 / 3.0, 4.0 / 3.0};
+  for (const MixingModel model :
+       {MixingModel::exponential, MixingModel::error_function, MixingModel::diffusive}) {
+    const MixingRateFit fit = fit_mixing_rate(times, laceys, model);
+    ASSERT_EQ(fit.status, MixingFitStatus::ok);
+    const std::string suffix = mixing_model_suffix(model);
+    EXPECT_DOUBLE_EQ(figures.at("lacey_rate_" + suffix), fit.rate) << suffix;
+    EXPECT_DOUBLE_EQ(figures.at("lacey_initial_" + suffix), fit.initial) << suffix;
+    EXPECT_DOUBLE_EQ(figures.at("lacey_plateau_" + suffix), fit.plateau) << suffix;
+    EXPECT_DOUBLE_EQ(figures.at("lacey_fit_r2_" + suffix), fit.r_squared) << suffix;
+    EXPECT_DOUBLE_EQ(figures.at("lacey_fit_rms_" + suffix), fit.rms) << suffix;
+    // A step from -4/3 to 4/3 before the second sample: M_0 = -4/3, M_f = 4/3, and k is not
+    // bounded by the data.
+    EXPECT_NEAR(fit.initial, -4.0 / 3.0, 1e-6) << suffix;
+    EXPECT_NEAR(fit.plateau, 4.0 / 3.0, 1e-6) << suffix;
+    EXPECT_TRUE(fit.at_search_limit) << suffix;
+  }
 }
 
 }  // namespace

@@ -1,0 +1,40 @@
+#pragma once
+// Settings of the bed measurements (docs/mixing.md, "Measurements of a granular bed";
+// docs/case-reference.md, "analyses"): packing_fraction, velocity_profile and angle_of_repose.
+// They sit apart from the analyses so that AnalysisOptions and the case's AnalysisSpec can hold
+// them.
+#include "core/vec.hpp"
+
+namespace partimix::analysis {
+
+// packing_fraction: an axis-aligned box [lo, hi]. A flat z side (lo.z = hi.z, 2D runs) makes it
+// a rectangle of the x-y plane, and the fraction an area fraction of discs.
+struct PackingBox {
+  Vec3 lo = Vec3::Zero();
+  Vec3 hi = Vec3::Zero();
+};
+
+// velocity_profile: the segment from `start` to `end` cut into `bins` equal lengths; particles
+// within width/2 of the segment count. The measured component is velocity . direction
+// (direction normalised on use), or the speed |v| when `speed` is true.
+struct ProfileLine {
+  Vec3 start = Vec3::Zero();
+  Vec3 end = Vec3::UnitX();
+  int bins = 10;
+  double width = 0.0;
+  bool speed = true;
+  Vec3 direction = Vec3::UnitX();
+};
+
+// angle_of_repose: the drum axis (through `centre`, along `axis`), the direction of gravity
+// `down` (its part normal to the axis is used), the number of bins across the bed, and the
+// fraction `trim` of the surface width left out at each end of the line fit.
+struct ReposeSection {
+  Vec3 axis = Vec3::UnitZ();
+  Vec3 centre = Vec3::Zero();
+  Vec3 down = -Vec3::UnitY();
+  int bins = 20;
+  double trim = 0.2;
+};
+
+}  // namespace partimix::analysis

@@ -1,0 +1,91 @@
+#include "app/dem_simulation.hpp"
+
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+#include "dem/dem_solver.hpp"
+#include "dem/insertion.hpp"
+
+namespace partimix::app {
+namespace {
+
+InputError case_error(const io::Case& the_case, const std::string& key, const std::string& what) {
+  return InputError(InputLocation{the_case.file, 0, 0, key}, what);
+}
+
+double kinetic_energy_per_grain(const ParticleStore& store) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < store.size(); ++i)
+    sum += 0.5 * store.mass()[i] * store.velocity()[i].squaredNorm();
+  return sum / static_cast<double>(store.size());
+}
+
+// Steps with the walls held still until the grains' mean kinetic energy falls below the fill's
+// threshold (checked every 100 steps, after at least 0.01 s) or the fill's settle time passes.
+void settle(const io::Case& the_case, dem::DemSolver& solver, const ParticleStore& store,
+            std::vector<std::string>& warnings) {
+  const io::GrainFill& fill = the_case.dem.fill;
+  solver.freeze_walls(true);
+  double energy = kinetic_energy_per_grain(store);
+  long steps = 0;
+  while (solver.time() < fill.settle_time) {
+    solver.step(solver.stable_dt());
+    if (++steps % 100 != 0)
+      continue;
+    energy = kinetic_energy_per_grain(store);
+    if (energy < fill.settle_energy && solver.time() > 0.01)
+      break;
+  }
+  if (energy >= fill.settle_energy && fill.settle_time > 0.0) {
+    warnings.push_back(fmt::format(
+        "{}: dem.fill: the grains did not settle within settle_time = {} s (kinetic energy {:.3g} "
+        "J per grain, threshold {:.3g} J); the run starts from a bed still in motion",
+        the_case.file, fill.settle_time, energy, fill.settle_energy));
+  }
+  solver.record_settling(solver.time(), energy);
+  solver.freeze_walls(false);
+  solver.reset_time();
+}
+
+// Species 1 on the side of the split plane its normal points to, 0 elsewhere.
+void split_species(const io::Case& the_case, dem::DemSolver& solver, const ParticleStore& store) {
+  if (the_case.dem.config.species.size() < 2)
+    return;
+  const io::GrainFill& fill = the_case.dem.fill;
+  for (std::size_t i = 0; i < store.size(); ++i) {
+    const bool tracer = (store.position()[i] - fill.split_point).dot(fill.split_normal) > 0.0;
+    solver.set_species(i, tracer ? 1 : 0);
+  }
+}
+
+}  // namespace
+
+Simulation build_dem_simulation(const io::Case& the_case) {
+  Simulation simulation;
+  simulation.store = std::make_unique<ParticleStore>();
+  dem::Grains grains;
+  try {
+    grains = dem::insert_random(*the_case.dem.fill.region, the_case.dem.fill.insertion);
+  } catch (const std::runtime_error& error) {
+    throw case_error(the_case, "dem.fill", error.what());
+  }
+  for (const Vec3& x : grains.position) {
+    if (!the_case.domain.contains(x))
+      throw case_error(the_case, "dem.fill.region", "the fill region reaches outside the domain");
+  }
+  std::unique_ptr<dem::DemSolver> solver;
+  try {
+    solver = std::make_unique<dem::DemSolver>(*simulation.store, the_case.domain,
+                                              the_case.dem.config, the_case.gravity, grains);
+  } catch (const InputError& error) {
+    throw case_error(the_case, error.location().key_path, error.message());
+  }
+  settle(the_case, *solver, *simulation.store, simulation.warnings);
+  split_species(the_case, *solver, *simulation.store);
+  simulation.solver = std::move(solver);
+  return simulation;
+}
+
+}  // namespace partimix::app

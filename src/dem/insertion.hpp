@@ -1,0 +1,24 @@
+#pragma once
+// Random insertion of spheres without overlap into a region (docs/dem.md, "Filling"): random
+// sequential addition, each candidate centre drawn uniformly inside the region at least its
+// radius from the region's surface and kept when it overlaps no sphere placed before.
+#include <cstdint>
+
+#include "dem/config.hpp"
+#include "geometry/shape.hpp"
+
+namespace partimix::dem {
+
+struct InsertionRequest {
+  int count = 0;
+  double radius_min = 0.0;  // radii uniform in [min, max]; min = max: one size
+  double radius_max = 0.0;
+  std::uint32_t seed = 1;
+  int species = 0;
+  int attempts_per_sphere = 1000;  // gives up (throws) after count * attempts candidates
+};
+
+// Throws std::runtime_error naming how many spheres fitted when the region is too full.
+Grains insert_random(const geometry::Shape& region, const InsertionRequest& request);
+
+}  // namespace partimix::dem

@@ -1,0 +1,37 @@
+#include "io/motion_section.hpp"
+
+namespace partimix::io {
+
+namespace {
+
+// The rotation axis: z in 2D (the plane's normal); in 3D any non-zero vector, normalised.
+Vec3 read_axis(Reader& section, int dimensions) {
+  if (dimensions == 2)
+    return Vec3::UnitZ();
+  const Vec3 axis = section.vector("axis", 3, Vec3::UnitZ());
+  if (axis.norm() == 0.0)
+    throw section.error("axis", "the axis must not be the zero vector");
+  return axis.normalized();
+}
+
+}  // namespace
+
+geometry::MotionConfig read_motion(Reader& item, int dimensions) {
+  Reader section = item.optional_map("motion");
+  geometry::MotionConfig motion;
+  motion.type = section.choice("type", motion.type, {"fixed", "rotation", "planetary"});
+  if (motion.type != "fixed") {
+    motion.axis = read_axis(section, dimensions);
+    motion.axis_point = section.vector("axis_point", dimensions, Vec3::Zero());
+    motion.rpm = section.required<double>("rpm");
+    motion.ramp_time = section.optional<double>("ramp_time", 0.0, kNonNegative);
+  }
+  if (motion.type == "planetary") {
+    motion.centre = section.vector("centre", dimensions, Vec3::Zero());
+    motion.revolution_rpm = section.required<double>("revolution_rpm");
+  }
+  section.done();
+  return motion;
+}
+
+}  // namespace partimix::io
