@@ -1,5 +1,6 @@
 #pragma once
-// Surge front: the largest coordinate along one axis of any material particle, fluid or grain (dam break).
+// Surge front: the largest coordinate along one axis of any material particle, fluid or grain (dam
+// break).
 #include "analysis/analysis.hpp"
 
 namespace partimix::analysis {
