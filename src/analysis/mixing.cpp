@@ -44,6 +44,7 @@ void Mixing::add_figures(std::map<std::string, double>& figures) const {
     figures[name("lacey_plateau_")] = fit.plateau;
     figures[name("lacey_fit_r2_")] = fit.r_squared;
     figures[name("lacey_fit_rms_")] = fit.rms;
+    figures[name("lacey_fit_at_limit_")] = fit.at_search_limit ? 1.0 : 0.0;
   }
 }
 

@@ -148,7 +148,7 @@ TEST(MixingAnalysis, MixingRateFiguresFitTheSampledLaceyIndex) {
   EXPECT_TRUE(std::isnan(sample_once(mixing, untagged, 5.0)[1]));
   std::map<std::string, double> figures;
   mixing.add_figures(figures);
-  EXPECT_EQ(figures.size(), 17u);  // xi_final, lacey_final and 5 for each of 3 models
+  EXPECT_EQ(figures.size(), 20u);  // xi_final, lacey_final and 6 for each of 3 models
   const std::vector<double> times{0, 1, 2, 3, 4};
   const std::vector<double> laceys{-4.0 / 3.0, 4.0 / 3.0, 4.0 / 3.0, 4.0 / 3.0, 4.0 / 3.0};
   for (const MixingModel model :
@@ -161,6 +161,7 @@ TEST(MixingAnalysis, MixingRateFiguresFitTheSampledLaceyIndex) {
     EXPECT_DOUBLE_EQ(figures.at("lacey_plateau_" + suffix), fit.plateau) << suffix;
     EXPECT_DOUBLE_EQ(figures.at("lacey_fit_r2_" + suffix), fit.r_squared) << suffix;
     EXPECT_DOUBLE_EQ(figures.at("lacey_fit_rms_" + suffix), fit.rms) << suffix;
+    EXPECT_EQ(figures.at("lacey_fit_at_limit_" + suffix), 1.0) << suffix;
     // A step from -4/3 to 4/3 before the second sample: M_0 = -4/3, M_f = 4/3, and k is not
     // bounded by the data.
     EXPECT_NEAR(fit.initial, -4.0 / 3.0, 1e-6) << suffix;
