@@ -39,6 +39,9 @@ analysis::AnalysisOptions options_of(const io::AnalysisSpec& spec, const io::Cas
   options.metzner_otto = spec.metzner_otto;
   options.fluid = flow_scales(the_case.fluid);
   options.mixing = spec.mixing;
+  options.packing = spec.packing;
+  options.profile = spec.profile;
+  options.repose = spec.repose;
   if (spec.type == "body_loads" || spec.type == "power_number") {
     if (bodies == nullptr)
       throw RunError("the analysis '" + spec.type + "' needs the bodies of the simulation");
@@ -49,10 +52,13 @@ analysis::AnalysisOptions options_of(const io::AnalysisSpec& spec, const io::Cas
   return options;
 }
 
-std::vector<std::unique_ptr<analysis::Analysis>> make_analyses(
-    const io::Case& the_case, const geometry::MovingBodies* bodies) {
+// Kinetic energy reads the particle fields at set-up: its rotational column exists only for
+// particles with angular velocities and radii (DEM).
+std::vector<std::unique_ptr<analysis::Analysis>> make_analyses(const io::Case& the_case,
+                                                               const geometry::MovingBodies* bodies,
+                                                               const ParticleStore& particles) {
   std::vector<std::unique_ptr<analysis::Analysis>> analyses;
-  analyses.push_back(std::make_unique<analysis::KineticEnergy>());
+  analyses.push_back(std::make_unique<analysis::KineticEnergy>(particles));
   analyses.push_back(std::make_unique<analysis::MaxSpeed>());
   for (const auto& spec : the_case.analyses) {
     analyses.push_back(
@@ -78,7 +84,7 @@ Runner::Runner(const io::Case& the_case, Solver& solver, const geometry::MovingB
     : case_(the_case),
       solver_(solver),
       options_(std::move(options)),
-      analyses_(make_analyses(the_case, bodies)) {
+      analyses_(make_analyses(the_case, bodies, solver.particles())) {
   for (const auto& a : analyses_)
     needs_body_forces_ = needs_body_forces_ || a->needs_body_forces();
 }
