@@ -7,6 +7,7 @@
 #include <deque>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/vec.hpp"
@@ -46,6 +47,10 @@ class ParticleStore {
   // Finds a field by name; nullptr if absent.
   const Field<double>* find_scalar(const std::string& name) const;
   const Field<Vec3>* find_vector(const std::string& name) const;
+  // The same, writable: to set a method's field at set-up (an initial angular velocity).
+  Field<Vec3>* find_vector(const std::string& name) {
+    return const_cast<Field<Vec3>*>(std::as_const(*this).find_vector(name));
+  }
   const Field<std::int32_t>* find_integer(const std::string& name) const;
 
   std::vector<std::int64_t>& id() { return ids_->values; }

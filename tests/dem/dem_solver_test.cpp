@@ -8,6 +8,11 @@
 //   when mu_s > (2/7) tan(alpha), and slides at a = g (sin(alpha) - mu_s cos(alpha)) otherwise;
 //   the distance after 0.2 s within 2e-3 (measured 1.5e-4 rolling, 5e-4 sliding), with the
 //   grains re-sorted every step so that the contact history must follow its particle.
+// - A grain turning with a rotating drum as one rigid body (no gravity, resting on the wall)
+//   stays with it: the wall's velocity at the contact enters the contact velocity with the
+//   right sign and size, so the tangential force stays near zero and after a tenth of a
+//   revolution the grain's angle about the axis matches the drum's within 1e-4 rad (measured
+//   3.9e-6; with the wall velocity's sign flipped it is 0.125 rad off).
 // - Energy: 125 spheres in a closed box of six planes, e = 1, no friction, no gravity: kinetic
 //   plus elastic contact energy after 2000 steps at the default step within 2e-3 of the start
 //   (measured -6.7e-4).
@@ -18,6 +23,7 @@
 #include <random>
 
 #include "dem/dem_solver.hpp"
+#include "dem/drum_wall.hpp"
 #include "dem/plane_wall.hpp"
 
 namespace partimix::dem {
@@ -120,6 +126,33 @@ TEST(DemSolver, SphereRollsOrSlidesDownAnInclineAsTheRigidBodyTheorySays) {
   const double sliding =
       0.5 * g * (std::sin(alpha) - friction * std::cos(alpha)) * duration * duration;
   EXPECT_NEAR(incline_distance(alpha, friction, duration), sliding, 2e-3 * sliding);
+}
+
+TEST(DemSolver, GrainCoRotatingWithTheDrumStaysWithIt) {
+  Config config = one_species(0.5, 0.85);
+  geometry::MotionConfig motion;
+  motion.type = "rotation";
+  motion.rpm = 30.0;
+  const double drum_radius = 0.1;
+  config.walls.push_back(
+      {std::make_shared<DrumWall>(Vec3::Zero(), Vec3::UnitZ(), drum_radius), motion, {1.0e7, 0.3}});
+  Domain domain = box(0.11);
+  domain.periodic = {false, false, true};
+  ParticleStore store;
+  const double centre = drum_radius - kRadius;
+  DemSolver solver(store, domain, config, Vec3::Zero(),
+                   Grains{{Vec3(0.0, -centre, 0.0)}, {kRadius}, {0}});
+  const double omega = 30.0 * 2.0 * std::numbers::pi / 60.0;
+  store.velocity()[0] = Vec3(omega * centre, 0.0, 0.0);
+  store.find_vector("angular_velocity")->values[0] = omega * Vec3::UnitZ();
+  const double duration = 0.2;  // a tenth of a revolution
+  const double dt = solver.stable_dt();
+  int steps = 0;
+  for (; steps * dt < duration; ++steps)
+    solver.step(dt);
+  const Vec3& x = store.position()[0];
+  const double turned = std::atan2(x.y(), x.x()) + 0.5 * std::numbers::pi;
+  EXPECT_NEAR(turned, omega * steps * dt, 1e-4);
 }
 
 TEST(DemSolver, ElasticFrictionlessGasInABoxKeepsItsEnergy) {
