@@ -27,6 +27,7 @@ VelocityProfile::VelocityProfile(const ProfileLine& line)
   }
   sums_.assign(static_cast<std::size_t>(line.bins), 0.0);
   counts_.assign(static_cast<std::size_t>(line.bins), 0);
+  last_.assign(static_cast<std::size_t>(line.bins), std::numeric_limits<double>::quiet_NaN());
 }
 
 std::vector<Column> VelocityProfile::columns() const {
@@ -59,6 +60,14 @@ void VelocityProfile::sample(const ParticleStore& particles, double /*time*/,
   for (std::size_t b = 0; b < sums_.size(); ++b) {
     values[b] = counts_[b] > 0 ? sums_[b] / static_cast<double>(counts_[b])
                                : std::numeric_limits<double>::quiet_NaN();
+    last_[b] = values[b];
+  }
+}
+
+void VelocityProfile::add_figures(std::map<std::string, double>& figures) const {
+  for (std::size_t b = 0; b < last_.size(); ++b) {
+    if (std::isfinite(last_[b]))
+      figures["velocity_profile_" + std::to_string(b) + "_final"] = last_[b];
   }
 }
 

@@ -6,6 +6,8 @@
 // v . d (d the chosen unit direction) or of the speed |v|; NaN when the bin is empty. Bin b is
 // centred at start + (b + 1/2) (L/n) e.
 #include <cstdint>
+#include <map>
+#include <string>
 #include <vector>
 
 #include "analysis/analysis.hpp"
@@ -20,6 +22,8 @@ class VelocityProfile final : public Analysis {
   // velocity_profile_0 ... velocity_profile_<n-1> [m/s].
   std::vector<Column> columns() const override;
   void sample(const ParticleStore& particles, double time, std::span<double> values) override;
+  // velocity_profile_<b>_final: the last sample's value of each bin that was not empty.
+  void add_figures(std::map<std::string, double>& figures) const override;
 
  private:
   ProfileLine line_;
@@ -28,6 +32,7 @@ class VelocityProfile final : public Analysis {
   Vec3 direction_;                    // d (unit), when not the speed
   std::vector<double> sums_;          // per bin, sized at set-up
   std::vector<std::int64_t> counts_;  // per bin
+  std::vector<double> last_;          // per bin, the last sample (NaN before the first)
 };
 
 }  // namespace partimix::analysis

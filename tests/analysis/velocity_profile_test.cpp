@@ -8,7 +8,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "load_fixtures.hpp"
@@ -96,6 +98,23 @@ TEST(VelocityProfile, OtherComponentsAndTheSpeed) {
   for (int j = 0; j < 5; ++j)
     expected += std::hypot(kShearRate * (0.02 + 0.04 * j), 3.0) / 5.0;
   EXPECT_NEAR(sample_once(speed, store, 0.0)[0], expected, kTight);
+}
+
+TEST(VelocityProfile, FinalFiguresAreTheLastSampleOfTheFilledBins) {
+  ParticleStore store;
+  shear(store);
+  VelocityProfile profile(line(Vec3::UnitX()));
+  std::map<std::string, double> figures;
+  profile.add_figures(figures);
+  EXPECT_TRUE(figures.empty());
+  sample_once(profile, store, 0.0);
+  for (Vec3& v : store.velocity())
+    v *= 2.0;
+  sample_once(profile, store, 1.0);
+  profile.add_figures(figures);
+  ASSERT_EQ(figures.size(), 5u);  // bin 5 is empty
+  EXPECT_NEAR(figures.at("velocity_profile_2_final"), 2.0 * kShearRate * 0.5, kTight);
+  EXPECT_EQ(figures.count("velocity_profile_5_final"), 0u);
 }
 
 TEST(VelocityProfile, NarrowWidthTakesOnlyTheLine) {
