@@ -3,6 +3,13 @@
 #include "analysis/mixing_rate.hpp"
 
 namespace partimix::analysis {
+namespace {
+
+// The Lacey index of a random mixture: the fitted plateau is held at or below it
+// (docs/mixing.md, "Mixing rate").
+constexpr double kRandomMixtureLacey = 1.0;
+
+}  // namespace
 
 Mixing::Mixing(const MixingRegion& region)
     : cells_(make_sampling_cells(region)), min_count_(region.min_count), counts_(*cells_) {
@@ -34,7 +41,7 @@ void Mixing::add_figures(std::map<std::string, double>& figures) const {
   figures["lacey_final"] = last_lacey_;
   for (const MixingModel model :
        {MixingModel::exponential, MixingModel::error_function, MixingModel::diffusive}) {
-    const MixingRateFit fit = fit_mixing_rate(times_, laceys_, model);
+    const MixingRateFit fit = fit_mixing_rate(times_, laceys_, model, kRandomMixtureLacey);
     if (fit.status != MixingFitStatus::ok)
       continue;  // too few samples, or nothing to fit: no figures rather than NaN ones
     const std::string suffix = mixing_model_suffix(model);
@@ -45,6 +52,7 @@ void Mixing::add_figures(std::map<std::string, double>& figures) const {
     figures[name("lacey_fit_r2_")] = fit.r_squared;
     figures[name("lacey_fit_rms_")] = fit.rms;
     figures[name("lacey_fit_at_limit_")] = fit.at_search_limit ? 1.0 : 0.0;
+    figures[name("lacey_plateau_bounded_")] = fit.plateau_bounded ? 1.0 : 0.0;
   }
 }
 

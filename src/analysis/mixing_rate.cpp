@@ -58,49 +58,78 @@ SampleSummary summarise(std::span<const double> times, std::span<const double> v
   return s;
 }
 
-// The linear least-squares fit M = M_0 + c h at one rate k.
+// The linear least-squares fit M = M_0 + (M_f - M_0) h at one rate k, with M_f <= M_max.
 struct LinearFit {
   double squares = 0.0;  // SS_res
-  double slope = 0.0;    // c = M_f - M_0
-  double mean_h = 0.0;
+  double initial = 0.0;  // M_0
+  double plateau = 0.0;  // M_f
+  bool bounded = false;  // M_f held at M_max
   bool ok = false;
 };
 
+// h_j = h(k (t_j - t_0)) of the valid samples, one at a time.
+template <typename Visit>
+void for_each_sample(std::span<const double> times, std::span<const double> values,
+                     const SampleSummary& s, MixingModel model, double rate, Visit&& visit) {
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    if (valid(times[i], values[i]))
+      visit(mixing_approach(model, rate * (times[i] - s.start)), values[i]);
+  }
+}
+
+// With M_f held at M_max: M - M_max h = M_0 (1 - h), one parameter. The first sample has h = 0,
+// so the sum of (1 - h)^2 is at least 1.
+LinearFit fit_with_plateau(std::span<const double> times, std::span<const double> values,
+                           const SampleSummary& s, MixingModel model, double rate, double plateau) {
+  double sum_gg = 0.0;
+  double sum_gy = 0.0;
+  for_each_sample(times, values, s, model, rate, [&](double h, double m) {
+    sum_gg += (1.0 - h) * (1.0 - h);
+    sum_gy += (1.0 - h) * (m - plateau * h);
+  });
+  LinearFit fit;
+  fit.initial = sum_gy / sum_gg;
+  fit.plateau = plateau;
+  fit.bounded = true;
+  for_each_sample(times, values, s, model, rate, [&](double h, double m) {
+    const double r = m - fit.initial * (1.0 - h) - plateau * h;
+    fit.squares += r * r;
+  });
+  fit.ok = true;
+  return fit;
+}
+
 LinearFit fit_at(std::span<const double> times, std::span<const double> values,
-                 const SampleSummary& s, MixingModel model, double rate) {
+                 const SampleSummary& s, MixingModel model, double rate, double plateau_max) {
   // With m_i = M_i - mean(M), sum m_i = 0, so S_hm = sum (h_i - mean h) m_i = sum h_i m_i. h lies
   // in [0, 1] and is small for small k, so S_hh = sum h^2 - (sum h)^2 / n keeps its digits.
   double sum_h = 0.0;
   double sum_hh = 0.0;
   double sum_hm = 0.0;
-  for (std::size_t i = 0; i < times.size(); ++i) {
-    if (!valid(times[i], values[i]))
-      continue;
-    const double h = mixing_approach(model, rate * (times[i] - s.start));
+  for_each_sample(times, values, s, model, rate, [&](double h, double m) {
     sum_h += h;
     sum_hh += h * h;
-    sum_hm += h * (values[i] - s.mean);
-  }
+    sum_hm += h * (m - s.mean);
+  });
   LinearFit fit;
-  fit.mean_h = sum_h / s.count;
-  const double s_hh = sum_hh - sum_h * fit.mean_h;
+  const double mean_h = sum_h / s.count;
+  const double s_hh = sum_hh - sum_h * mean_h;
   if (!(s_hh > 0.0)) {
     fit.squares = s.total_squares;
     return fit;
   }
-  fit.slope = sum_hm / s_hh;
+  const double slope = sum_hm / s_hh;  // M_f - M_0
+  fit.initial = s.mean - slope * mean_h;
+  fit.plateau = fit.initial + slope;
+  if (fit.plateau > plateau_max)
+    return fit_with_plateau(times, values, s, model, rate, plateau_max);
   // SS_res summed from the residuals, not as SS_tot - S_hm^2 / S_hh: near the best k that
   // difference loses the digits the search needs to place k.
-  const double intercept = -fit.slope * fit.mean_h;  // of the centred values m_i
-  double squares = 0.0;
-  for (std::size_t i = 0; i < times.size(); ++i) {
-    if (!valid(times[i], values[i]))
-      continue;
-    const double h = mixing_approach(model, rate * (times[i] - s.start));
-    const double r = values[i] - s.mean - intercept - fit.slope * h;
-    squares += r * r;
-  }
-  fit.squares = squares;
+  const double intercept = -slope * mean_h;  // of the centred values m_i
+  for_each_sample(times, values, s, model, rate, [&](double h, double m) {
+    const double r = m - s.mean - intercept - slope * h;
+    fit.squares += r * r;
+  });
   fit.ok = true;
   return fit;
 }
@@ -139,7 +168,7 @@ std::string mixing_model_suffix(MixingModel model) {
 }
 
 MixingRateFit fit_mixing_rate(std::span<const double> times, std::span<const double> values,
-                              MixingModel model) {
+                              MixingModel model, double plateau_max) {
   if (times.size() != values.size())
     throw std::invalid_argument("fit_mixing_rate: times and values differ in length");
   MixingRateFit result;
@@ -170,7 +199,7 @@ MixingRateFit fit_mixing_rate(std::span<const double> times, std::span<const dou
   const int points = std::max(2, static_cast<int>(std::ceil((ln_hi - ln_lo) / step)) + 1);
   const double grid_step = (ln_hi - ln_lo) / (points - 1);
   auto squares_at = [&](double ln_k) {
-    return fit_at(times, values, s, model, std::exp(ln_k)).squares;
+    return fit_at(times, values, s, model, std::exp(ln_k), plateau_max).squares;
   };
   int best = 0;
   double best_squares = squares_at(ln_lo);
@@ -215,14 +244,15 @@ MixingRateFit fit_mixing_rate(std::span<const double> times, std::span<const dou
       squares_at(ln_lo) <= best_found + tolerance || squares_at(ln_hi) <= best_found + tolerance;
 
   const double rate = std::exp(ln_k);
-  const LinearFit fit = fit_at(times, values, s, model, rate);
+  const LinearFit fit = fit_at(times, values, s, model, rate, plateau_max);
   if (!fit.ok) {
     result.status = MixingFitStatus::flat;
     return result;
   }
   result.rate = rate;
-  result.initial = s.mean - fit.slope * fit.mean_h;
-  result.plateau = result.initial + fit.slope;
+  result.initial = fit.initial;
+  result.plateau = fit.plateau;
+  result.plateau_bounded = fit.bounded;
   result.r_squared = 1.0 - fit.squares / s.total_squares;
   result.rms = std::sqrt(fit.squares / s.count);
   result.status = MixingFitStatus::ok;

@@ -43,6 +43,7 @@ struct MixingRateFit {
   double start_time = nan;       // t_0 [s]: the time of the first valid sample
   int samples = 0;               // n: the valid samples used
   bool at_search_limit = false;  // an end of the searched range fits as well: k not determined
+  bool plateau_bounded = false;  // M_f held at the bound plateau_max: no plateau in the data
 };
 
 // h(x) of the model, x = k (t - t_0) >= 0: 0 at x = 0, -> 1 as x -> infinity.
@@ -59,9 +60,12 @@ double mixing_model_value(MixingModel model, const MixingRateFit& fit, double ti
 // indistinguishable from a straight line (exponential, erf) or a square root (diffusive) in t;
 // above, it has reached its plateau at every sample but the first. When an end of this range
 // fits as well as the best k (to round-off), the data do not bound k and at_search_limit is set.
-// Throws std::invalid_argument when the spans differ in length.
+// M_f is bounded above by plateau_max (1 for a Lacey index, the value of a random mixture): for a
+// k whose free fit puts M_f above it, M_f is held at plateau_max and M_0 fitted alone, and the
+// fit says so (plateau_bounded). Throws std::invalid_argument when the spans differ in length.
 MixingRateFit fit_mixing_rate(std::span<const double> times, std::span<const double> values,
-                              MixingModel model);
+                              MixingModel model,
+                              double plateau_max = std::numeric_limits<double>::infinity());
 
 // "exp", "erf" or "diffusive", for figure names.
 std::string mixing_model_suffix(MixingModel model);

@@ -148,12 +148,12 @@ TEST(MixingAnalysis, MixingRateFiguresFitTheSampledLaceyIndex) {
   EXPECT_TRUE(std::isnan(sample_once(mixing, untagged, 5.0)[1]));
   std::map<std::string, double> figures;
   mixing.add_figures(figures);
-  EXPECT_EQ(figures.size(), 20u);  // xi_final, lacey_final and 6 for each of 3 models
+  EXPECT_EQ(figures.size(), 23u);  // xi_final, lacey_final and 7 for each of 3 models
   const std::vector<double> times{0, 1, 2, 3, 4};
   const std::vector<double> laceys{-4.0 / 3.0, 4.0 / 3.0, 4.0 / 3.0, 4.0 / 3.0, 4.0 / 3.0};
   for (const MixingModel model :
        {MixingModel::exponential, MixingModel::error_function, MixingModel::diffusive}) {
-    const MixingRateFit fit = fit_mixing_rate(times, laceys, model);
+    const MixingRateFit fit = fit_mixing_rate(times, laceys, model, 1.0);
     ASSERT_EQ(fit.status, MixingFitStatus::ok);
     const std::string suffix = mixing_model_suffix(model);
     EXPECT_DOUBLE_EQ(figures.at("lacey_rate_" + suffix), fit.rate) << suffix;
@@ -162,10 +162,12 @@ TEST(MixingAnalysis, MixingRateFiguresFitTheSampledLaceyIndex) {
     EXPECT_DOUBLE_EQ(figures.at("lacey_fit_r2_" + suffix), fit.r_squared) << suffix;
     EXPECT_DOUBLE_EQ(figures.at("lacey_fit_rms_" + suffix), fit.rms) << suffix;
     EXPECT_EQ(figures.at("lacey_fit_at_limit_" + suffix), 1.0) << suffix;
-    // A step from -4/3 to 4/3 before the second sample: M_0 = -4/3, M_f = 4/3, and k is not
-    // bounded by the data.
+    EXPECT_EQ(figures.at("lacey_plateau_bounded_" + suffix), 1.0) << suffix;
+    // A step from -4/3 to 4/3 before the second sample: M_0 = -4/3, the plateau held at the
+    // Lacey index of a random mixture, 1, and k not bounded by the data.
     EXPECT_NEAR(fit.initial, -4.0 / 3.0, 1e-6) << suffix;
-    EXPECT_NEAR(fit.plateau, 4.0 / 3.0, 1e-6) << suffix;
+    EXPECT_DOUBLE_EQ(fit.plateau, 1.0) << suffix;
+    EXPECT_TRUE(fit.plateau_bounded) << suffix;
     EXPECT_TRUE(fit.at_search_limit) << suffix;
   }
 }

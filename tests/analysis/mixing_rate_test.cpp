@@ -286,6 +286,52 @@ TEST(MixingRate, StepBeyondTheSampleSpacingHitsTheSearchLimit) {
   EXPECT_NEAR(result.r_squared, 1.0, 1e-9);
 }
 
+// A curve whose free fit has its plateau below the bound is fitted as without it.
+TEST(MixingRate, BoundAbovePlateauChangesNothing) {
+  for (const Truth& truth : {kExponential, kErf, kDiffusive}) {
+    const Series s = synthetic(truth, 0.01);
+    const MixingRateFit free = fit(s, truth.model);
+    const MixingRateFit bounded = fit_mixing_rate(s.times, s.values, truth.model, 1.0);
+    const std::string model = mixing_model_suffix(truth.model);
+    EXPECT_FALSE(bounded.plateau_bounded) << model;
+    EXPECT_DOUBLE_EQ(bounded.rate, free.rate) << model;
+    EXPECT_DOUBLE_EQ(bounded.plateau, free.plateau) << model;
+  }
+}
+
+// SS_res of M = M_0 + (M_f - M_0) h(k t) over a series.
+double squares(const Series& s, MixingModel model, double rate, double initial, double plateau) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < s.times.size(); ++i) {
+    const Truth trial{model, rate, initial, plateau, s.times.front()};
+    const double r = s.values[i] - truth_at(trial, s.times[i]);
+    sum += r * r;
+  }
+  return sum;
+}
+
+// A run that ends far below its plateau (here the early part of a curve that would level off at
+// 1.6): the free fit puts M_f above 1; with the bound 1 the plateau is held there, flagged, and
+// (k, M_0) minimise SS_res among curves with M_f = 1: any step of 1e-3 in k or M_0 does worse.
+TEST(MixingRate, PlateauAboveTheBoundIsHeldThere) {
+  const Truth rising{MixingModel::exponential, 0.15, 0.02, 1.6};
+  const Series s = synthetic(rising, 0.01);
+  ASSERT_GT(fit(s, MixingModel::exponential).plateau, 1.0);
+  const MixingRateFit result = fit_mixing_rate(s.times, s.values, MixingModel::exponential, 1.0);
+  ASSERT_EQ(result.status, MixingFitStatus::ok);
+  EXPECT_TRUE(result.plateau_bounded);
+  EXPECT_DOUBLE_EQ(result.plateau, 1.0);
+  EXPECT_FALSE(result.at_search_limit);
+  const double best =
+      squares(s, MixingModel::exponential, result.rate, result.initial, result.plateau);
+  EXPECT_NEAR(result.rms, std::sqrt(best / 101.0), 1e-12);
+  for (const double step : {-1e-3, 1e-3}) {
+    EXPECT_GT(squares(s, MixingModel::exponential, result.rate * (1.0 + step), result.initial, 1.0),
+              best);
+    EXPECT_GT(squares(s, MixingModel::exponential, result.rate, result.initial + step, 1.0), best);
+  }
+}
+
 TEST(MixingRate, SpansOfDifferentLengthAreRefused) {
   EXPECT_THROW(fit_mixing_rate(std::vector<double>{0.0, 1.0}, std::vector<double>{0.0},
                                MixingModel::exponential),
