@@ -11,10 +11,6 @@
 namespace partimix::app {
 namespace {
 
-InputError case_error(const io::Case& the_case, const std::string& key, const std::string& what) {
-  return InputError(InputLocation{the_case.file, 0, 0, key}, what);
-}
-
 double kinetic_energy_per_grain(const ParticleStore& store) {
   double sum = 0.0;
   for (std::size_t i = 0; i < store.size(); ++i)

@@ -25,10 +25,6 @@ void append(ParticleStore& store, const std::vector<Vec3>& points, ParticleKind 
   }
 }
 
-InputError case_error(const io::Case& the_case, const std::string& key, const std::string& what) {
-  return InputError(InputLocation{the_case.file, 0, 0, key}, what);
-}
-
 void check_inside_domain(const io::Case& the_case, const ParticleStore& store) {
   for (std::size_t i = 0; i < store.size(); ++i) {
     if (!the_case.domain.contains(store.position()[i])) {
@@ -158,6 +154,10 @@ void tag_tracer(const io::Case& the_case, ParticleStore& store) {
 }
 
 }  // namespace
+
+InputError case_error(const io::Case& the_case, const std::string& key, const std::string& what) {
+  return InputError(InputLocation{the_case.file, 0, 0, key}, what);
+}
 
 Simulation build_simulation(const io::Case& the_case) {
   if (the_case.solver == "dem")

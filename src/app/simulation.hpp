@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
 #include "geometry/moving_bodies.hpp"
 #include "io/case.hpp"
 #include "particles/particle_store.hpp"
@@ -22,5 +23,9 @@ struct Simulation {
 // Throws InputError (naming the case key) when the case cannot be built, e.g. particles that
 // fall outside the domain or a periodic axis too short for the kernel.
 Simulation build_simulation(const io::Case& the_case);
+
+// An InputError of the case file at `key` (no line: the case is loaded; the problem shows when it
+// is built).
+InputError case_error(const io::Case& the_case, const std::string& key, const std::string& what);
 
 }  // namespace partimix::app

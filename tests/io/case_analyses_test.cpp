@@ -186,32 +186,8 @@ TEST(CaseAnalyses, AnalysesKeepTheirOrder) {
   EXPECT_EQ(loaded.analyses[3].type, "front_position");
 }
 
-// A 3D case with a default tracer and the analyses list `items`; the first item is line 20.
-std::string mixing_3d(const std::string& items) {
-  return R"(solver: sph
-dimensions: 3
-domain:
-  min: [0, 0, 0]
-  max: [1, 1, 1]
-time:
-  end: 1.0
-  output_interval: 0.1
-sph:
-  spacing: 0.05
-fluid:
-  density: 1000
-  viscosity: 1.0e-3
-  tracer: {}
-  regions:
-    - shape: box
-      min: [0, 0, 0]
-      max: [1, 1, 0.5]
-analyses:
-)" + items;
-}
-
 TEST(CaseAnalyses, MixingCylinderIn3D) {
-  const io::Case loaded = load_text(mixing_3d(
+  const io::Case loaded = load_text(with_analyses_3d(
       "  - {type: mixing, axis_point: [0.5, 0.5, 0], axis: [0, 0, 2], radius: 0.3, bottom: 0.1, "
       "top: 0.45, cells: [2, 4, 3]}\n"));
   EXPECT_EQ(loaded.fluid.tracer->normal, Vec3(0.0, -1.0, 0.0));
@@ -343,10 +319,10 @@ TEST(CaseAnalyses, DiscTakesNoAxialSpanIn2D) {
 }
 
 TEST(CaseAnalyses, TopMustLieAboveBottom) {
-  // The items start at line 20; top is on line 24, its value at column 10.
-  const InputError error = load_error(mixing_3d(
+  // top is on the fifth line of the items, its value at column 10.
+  const InputError error = load_error(with_analyses_3d(
       "  - type: mixing\n    radius: 0.3\n    cells: [2, 4, 3]\n    bottom: 0.4\n    top: 0.4\n"));
-  expect_location(error, "case.yaml", 24, 10, "analyses[0].top");
+  expect_location(error, "case.yaml", kFirstAnalysis3D + 4, 10, "analyses[0].top");
   EXPECT_THAT(error.message(), HasSubstr("top must lie above bottom"));
 }
 

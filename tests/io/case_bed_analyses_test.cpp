@@ -19,30 +19,6 @@ std::string with_items(const std::string& items) {
 }
 constexpr int kFirstItem = 19;
 
-// A 3D case with the analyses list `items`; the first item is line 19.
-std::string with_items_3d(const std::string& items) {
-  return R"(solver: sph
-dimensions: 3
-domain:
-  min: [0, 0, 0]
-  max: [1, 1, 1]
-time:
-  end: 1.0
-  output_interval: 0.1
-sph:
-  spacing: 0.05
-fluid:
-  density: 1000
-  viscosity: 1.0e-3
-  regions:
-    - shape: box
-      min: [0, 0, 0]
-      max: [1, 1, 0.5]
-analyses:
-)" + items;
-}
-constexpr int kFirstItem3D = 19;
-
 const io::AnalysisSpec& only_analysis(const io::Case& loaded) {
   EXPECT_EQ(loaded.analyses.size(), 1u);
   return loaded.analyses.at(0);
@@ -156,8 +132,8 @@ TEST(CaseBedAnalyses, AngleOfReposeTakesNoAxisIn2D) {
 
 TEST(CaseBedAnalyses, AngleOfReposeIn3D) {
   const io::Case loaded = load_text(
-      with_items_3d("  - {type: angle_of_repose, axis: [1, 0, 0], centre: [0, 0.5, 0.5], down: "
-                    "[0, 0, -9.81], bins: 30, trim: 0.1}\n"));
+      with_analyses_3d("  - {type: angle_of_repose, axis: [1, 0, 0], centre: [0, 0.5, 0.5], down: "
+                       "[0, 0, -9.81], bins: 30, trim: 0.1}\n"));
   const analysis::ReposeSection& section = only_analysis(loaded).repose;
   EXPECT_EQ(section.axis, Vec3::UnitX());
   EXPECT_EQ(section.centre, Vec3(0.0, 0.5, 0.5));
@@ -168,12 +144,12 @@ TEST(CaseBedAnalyses, AngleOfReposeIn3D) {
 
 TEST(CaseBedAnalyses, AngleOfReposeBadValues) {
   const InputError parallel = load_error(
-      with_items_3d("  - type: angle_of_repose\n    axis: [0, 1, 0]\n    down: [0, -2, 0]\n"));
-  expect_location(parallel, "case.yaml", kFirstItem3D + 2, 11, "analyses[0].down");
+      with_analyses_3d("  - type: angle_of_repose\n    axis: [0, 1, 0]\n    down: [0, -2, 0]\n"));
+  expect_location(parallel, "case.yaml", kFirstAnalysis3D + 2, 11, "analyses[0].down");
   EXPECT_THAT(parallel.message(), HasSubstr("must not be zero or parallel to the axis"));
   const InputError zero_axis =
-      load_error(with_items_3d("  - type: angle_of_repose\n    axis: [0, 0, 0]\n"));
-  expect_location(zero_axis, "case.yaml", kFirstItem3D + 1, 11, "analyses[0].axis");
+      load_error(with_analyses_3d("  - type: angle_of_repose\n    axis: [0, 0, 0]\n"));
+  expect_location(zero_axis, "case.yaml", kFirstAnalysis3D + 1, 11, "analyses[0].axis");
   const InputError trim = load_error(with_items("  - type: angle_of_repose\n    trim: 0.5\n"));
   expect_location(trim, "case.yaml", kFirstItem + 1, 11, "analyses[0].trim");
   EXPECT_THAT(trim.message(), HasSubstr("trim must be below 0.5"));

@@ -37,6 +37,32 @@ fluid:
       max: [0.5, 1.0]
 )";
 
+// A valid 3D case with a default tracer and the analyses list `items`; the first item is line
+// kFirstAnalysis3D.
+inline std::string with_analyses_3d(const std::string& items) {
+  return R"(solver: sph
+dimensions: 3
+domain:
+  min: [0, 0, 0]
+  max: [1, 1, 1]
+time:
+  end: 1.0
+  output_interval: 0.1
+sph:
+  spacing: 0.05
+fluid:
+  density: 1000
+  viscosity: 1.0e-3
+  tracer: {}
+  regions:
+    - shape: box
+      min: [0, 0, 0]
+      max: [1, 1, 0.5]
+analyses:
+)" + items;
+}
+inline constexpr int kFirstAnalysis3D = 20;
+
 inline std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> lines;
   std::istringstream in(text);
