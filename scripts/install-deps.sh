@@ -8,7 +8,7 @@ packages=(
   libeigen3-dev libyaml-cpp-dev libcli11-dev libfmt-dev libspdlog-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-matplotlib python3-numpy
-  clang-format nlohmann-json3-dev
+  clang-format nlohmann-json3-dev libhdf5-dev
 )
 
 missing=()

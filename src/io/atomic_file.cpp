@@ -29,12 +29,12 @@ void write_temporary(const std::filesystem::path& tmp, const std::filesystem::pa
 
 }  // namespace
 
-void write_atomically(const std::filesystem::path& file,
-                      const std::function<void(std::ostream&)>& write_content) {
+void replace_atomically(const std::filesystem::path& file,
+                        const std::function<void(const std::filesystem::path&)>& write_temporary) {
   const std::filesystem::path tmp = temporary_path(file);
   std::error_code ignored;
   try {
-    write_temporary(tmp, file, write_content);
+    write_temporary(tmp);
   } catch (...) {
     std::filesystem::remove(tmp, ignored);
     throw;
@@ -46,6 +46,12 @@ void write_atomically(const std::filesystem::path& file,
     throw RunError("cannot rename '" + tmp.string() + "' to '" + file.string() +
                    "': " + error.message());
   }
+}
+
+void write_atomically(const std::filesystem::path& file,
+                      const std::function<void(std::ostream&)>& write_content) {
+  replace_atomically(
+      file, [&](const std::filesystem::path& tmp) { write_temporary(tmp, file, write_content); });
 }
 
 }  // namespace partimix::io

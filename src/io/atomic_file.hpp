@@ -13,4 +13,9 @@ namespace partimix::io {
 void write_atomically(const std::filesystem::path& file,
                       const std::function<void(std::ostream&)>& write_content);
 
+// The same for a writer that makes the file itself: write_temporary(tmp) writes "<file>.tmp"
+// (a library that opens files by name, such as HDF5), which is then renamed to file.
+void replace_atomically(const std::filesystem::path& file,
+                        const std::function<void(const std::filesystem::path&)>& write_temporary);
+
 }  // namespace partimix::io
