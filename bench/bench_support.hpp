@@ -58,10 +58,10 @@ inline app::Simulation time_steps(benchmark::State& state, const std::string& ca
   const std::string path = std::string(PARTIMIX_SOURCE_DIR) + "/cases/" + case_name + ".yaml";
   app::Simulation simulation = app::build_simulation(io::load_case(path, overrides));
   for (int k = 0; k < warm_up_steps; ++k)
-    step(*simulation.solver);
+    step(*simulation.methods[0].solver);
   for (auto _ : state)
-    step(*simulation.solver);
-  report(state, *simulation.store);
+    step(*simulation.methods[0].solver);
+  report(state, *simulation.methods[0].store);
   return simulation;
 }
 

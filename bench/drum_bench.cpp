@@ -10,10 +10,11 @@ namespace partimix::bench {
 namespace {
 
 void report_contacts(benchmark::State& state, const app::Simulation& simulation) {
-  const auto& solver = dynamic_cast<const dem::DemSolver&>(*simulation.solver);
+  const auto& solver = dynamic_cast<const dem::DemSolver&>(*simulation.methods[0].solver);
   state.counters["contacts_per_grain"] = solver.mean_contacts();
   state.counters["solver_bytes_per_particle"] =
-      static_cast<double>(solver.bytes()) / static_cast<double>(simulation.store->size());
+      static_cast<double>(solver.bytes()) /
+      static_cast<double>(simulation.methods[0].store->size());
 }
 
 void drum_10k(benchmark::State& state) {
@@ -23,7 +24,7 @@ void drum_10k(benchmark::State& state) {
 void drum_100k(benchmark::State& state) {
   report_contacts(state, time_steps(state, "drum_seed",
                                     {"dem.fill.settle_time=0.15", "dem.fill.count=100000",
-                                     "dem.walls[0].radius=0.2", "dem.fill.region.radius=0.2",
+                                     "walls[0].radius=0.2", "dem.fill.region.radius=0.2",
                                      "dem.fill.region.height=0.1", "domain.min=[-0.201,-0.201,0]",
                                      "domain.max=[0.201,0.201,0.1]"}));
 }

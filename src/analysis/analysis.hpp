@@ -11,6 +11,7 @@
 #include "analysis/sampling_cells.hpp"
 #include "core/registry.hpp"
 #include "geometry/motion.hpp"
+#include "materials/flow_scales.hpp"
 #include "particles/particle_store.hpp"
 
 namespace partimix::analysis {
@@ -26,6 +27,11 @@ class Analysis {
   virtual std::vector<Column> columns() const = 0;
   // Writes columns().size() values into `values`.
   virtual void sample(const ParticleStore& particles, double time, std::span<double> values) = 0;
+  // Rebuilds the analysis' history when a run resumes from a checkpoint: called, in order, with
+  // the time and the values of every row it sampled before the checkpoint, so that its running
+  // figures (time averages, mixing-rate fits, last values) continue as if never stopped. The
+  // history of every analysis is a function of its sampled values.
+  virtual void replay(double time, std::span<const double> values) = 0;
   // True when sample() reads the field "body_force" (Solver::update_body_forces).
   virtual bool needs_body_forces() const { return false; }
   // Adds the analysis' summary figures (name -> value) for run.json's "figures".
@@ -33,11 +39,7 @@ class Analysis {
 };
 
 // The fluid's scales for Reynolds numbers (docs/power.md): a Newtonian fluid has K = mu, n = 1.
-struct FlowScales {
-  double density = 0.0;      // rho [kg/m^3]
-  double consistency = 0.0;  // K_s [Pa s^n]
-  double flow_index = 1.0;   // n [-]
-};
+using FlowScales = materials::FlowScales;
 
 // A body as the load analyses see it: its index, its motion and where the vessel axis is.
 struct BodyOptions {

@@ -101,6 +101,10 @@ void AngleOfRepose::sample(const ParticleStore& particles, double /*time*/,
   values[0] = last_;
 }
 
+void AngleOfRepose::replay(double /*time*/, std::span<const double> values) {
+  last_ = values[0];
+}
+
 void AngleOfRepose::add_figures(std::map<std::string, double>& figures) const {
   if (std::isfinite(last_))
     figures["angle_of_repose_final"] = last_;

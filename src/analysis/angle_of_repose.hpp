@@ -22,6 +22,7 @@ class AngleOfRepose final : public Analysis {
   explicit AngleOfRepose(const ReposeSection& section);
   std::vector<Column> columns() const override { return {{"angle_of_repose", "deg"}}; }
   void sample(const ParticleStore& particles, double time, std::span<double> values) override;
+  void replay(double time, std::span<const double> values) override;
   // angle_of_repose_final: the last value [deg], when it is not NaN.
   void add_figures(std::map<std::string, double>& figures) const override;
 

@@ -52,6 +52,10 @@ void BodyLoads::sample(const ParticleStore& particles, double time, std::span<do
   history_.add(time, values);
 }
 
+void BodyLoads::replay(double time, std::span<const double> values) {
+  history_.add(time, values);
+}
+
 void BodyLoads::add_figures(std::map<std::string, double>& figures) const {
   history_.add_figures(figures, prefix(), revolution_period(body_.motion_config),
                        body_.average_revolutions);

@@ -14,6 +14,7 @@ class BodyLoads final : public Analysis {
   explicit BodyLoads(const BodyOptions& body);
   std::vector<Column> columns() const override;
   void sample(const ParticleStore& particles, double time, std::span<double> values) override;
+  void replay(double time, std::span<const double> values) override;
   bool needs_body_forces() const override { return true; }
   void add_figures(std::map<std::string, double>& figures) const override;
 

@@ -10,6 +10,7 @@ class FrontPosition final : public Analysis {
   explicit FrontPosition(int axis) : axis_(axis) {}
   std::vector<Column> columns() const override;
   void sample(const ParticleStore& particles, double time, std::span<double> values) override;
+  void replay(double /*time*/, std::span<const double> /*values*/) override {}
 
  private:
   int axis_;

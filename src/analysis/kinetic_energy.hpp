@@ -19,6 +19,7 @@ class KineticEnergy final : public Analysis {
   std::vector<Column> columns() const override;
   // The rotational column is NaN for a store that lacks either field.
   void sample(const ParticleStore& particles, double time, std::span<double> values) override;
+  void replay(double /*time*/, std::span<const double> /*values*/) override {}
   bool rotational() const { return rotational_; }
 
  private:

@@ -36,6 +36,13 @@ void Mixing::sample(const ParticleStore& particles, double time, std::span<doubl
   laceys_.push_back(last_lacey_);
 }
 
+void Mixing::replay(double time, std::span<const double> values) {
+  last_xi_ = values[0];
+  last_lacey_ = values[1];
+  times_.push_back(time);
+  laceys_.push_back(last_lacey_);
+}
+
 void Mixing::add_figures(std::map<std::string, double>& figures) const {
   figures["xi_final"] = last_xi_;
   figures["lacey_final"] = last_lacey_;

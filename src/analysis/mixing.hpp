@@ -18,6 +18,7 @@ class Mixing final : public Analysis {
   explicit Mixing(const MixingRegion& region);
   std::vector<Column> columns() const override { return {{"xi", ""}, {"lacey", ""}}; }
   void sample(const ParticleStore& particles, double time, std::span<double> values) override;
+  void replay(double time, std::span<const double> values) override;
   void add_figures(std::map<std::string, double>& figures) const override;
 
  private:

@@ -42,6 +42,10 @@ void PackingFraction::sample(const ParticleStore& particles, double /*time*/,
   values[0] = last_;
 }
 
+void PackingFraction::replay(double /*time*/, std::span<const double> values) {
+  last_ = values[0];
+}
+
 void PackingFraction::add_figures(std::map<std::string, double>& figures) const {
   if (std::isfinite(last_))
     figures["packing_fraction_final"] = last_;

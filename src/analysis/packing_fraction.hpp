@@ -16,6 +16,7 @@ class PackingFraction final : public Analysis {
   std::vector<Column> columns() const override { return {{"packing_fraction", ""}}; }
   // Throws RunError when the particles have no field "radius".
   void sample(const ParticleStore& particles, double time, std::span<double> values) override;
+  void replay(double time, std::span<const double> values) override;
   // packing_fraction_final: the last value (none before the first sample).
   void add_figures(std::map<std::string, double>& figures) const override;
 

@@ -66,6 +66,10 @@ void PowerNumber::sample(const ParticleStore& particles, double time, std::span<
   history_.add(time, values);
 }
 
+void PowerNumber::replay(double time, std::span<const double> values) {
+  history_.add(time, values);
+}
+
 void PowerNumber::add_figures(std::map<std::string, double>& figures) const {
   history_.add_figures(figures, "", revolution_period(body_.motion_config),
                        body_.average_revolutions);

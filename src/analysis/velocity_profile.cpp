@@ -64,6 +64,10 @@ void VelocityProfile::sample(const ParticleStore& particles, double /*time*/,
   }
 }
 
+void VelocityProfile::replay(double /*time*/, std::span<const double> values) {
+  std::copy(values.begin(), values.end(), last_.begin());
+}
+
 void VelocityProfile::add_figures(std::map<std::string, double>& figures) const {
   for (std::size_t b = 0; b < last_.size(); ++b) {
     if (std::isfinite(last_[b]))

@@ -22,6 +22,7 @@ class VelocityProfile final : public Analysis {
   // velocity_profile_0 ... velocity_profile_<n-1> [m/s].
   std::vector<Column> columns() const override;
   void sample(const ParticleStore& particles, double time, std::span<double> values) override;
+  void replay(double time, std::span<const double> values) override;
   // velocity_profile_<b>_final: the last sample's value of each bin that was not empty.
   void add_figures(std::map<std::string, double>& figures) const override;
 

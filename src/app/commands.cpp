@@ -4,25 +4,31 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 
 #include <sys/wait.h>
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include "app/checkpoint_match.hpp"
 #include "app/interrupt.hpp"
 #include "app/runner.hpp"
 #include "app/simulation.hpp"
 #include "app/tools_dir.hpp"
 #include "core/error.hpp"
 #include "io/case.hpp"
+#include "io/checkpoint_folder.hpp"
 
 namespace partimix::app {
 namespace {
 
-void print_parameters(const Solver& solver) {
-  for (const auto& [name, value] : solver.derived_parameters()) {
-    fmt::print(stderr, "  {:<24} {:.6g}\n", name, value);
+void print_parameters(const Simulation& simulation, const io::Case& the_case) {
+  for (std::size_t m = 0; m < simulation.methods.size(); ++m) {
+    if (!the_case.single_method())
+      fmt::print(stderr, "  {}:\n", the_case.methods[m].name);
+    for (const auto& [name, value] : simulation.methods[m].solver->derived_parameters())
+      fmt::print(stderr, "  {:<24} {:.6g}\n", name, value);
   }
 }
 
@@ -44,27 +50,55 @@ int exit_code_of(const std::string& status) {
   return kExitRunFailed;
 }
 
+// The checkpoint to resume from: the newest readable one in the folder, of this case.
+std::optional<StateArchive> checkpoint_to_resume(const RunArguments& arguments,
+                                                 const io::Case& the_case) {
+  if (arguments.resume_dir.empty())
+    return std::nullopt;
+  const io::CheckpointFolder folder(arguments.resume_dir / "checkpoints");
+  std::filesystem::path used;
+  StateArchive checkpoint = folder.read_latest(&used);
+  check_checkpoint_matches(the_case, checkpoint, used);
+  folder.remove_newer_than(used);
+  fmt::print(stderr, "resuming from {}\n", used.string());
+  return checkpoint;
+}
+
+std::filesystem::path output_dir_of(const RunArguments& arguments, const io::Case& the_case) {
+  if (!arguments.resume_dir.empty())
+    return arguments.resume_dir;
+  if (!arguments.output_dir.empty())
+    return arguments.output_dir;
+  return std::filesystem::path("out") / the_case.name;
+}
+
 }  // namespace
 
 int run_command(const RunArguments& arguments) {
   try {
     const io::Case the_case = io::load_case(arguments.case_file, arguments.overrides);
-    Simulation simulation = build_simulation(the_case);
+    const std::optional<StateArchive> checkpoint = checkpoint_to_resume(arguments, the_case);
+    Simulation simulation = build_simulation(the_case, {checkpoint.has_value()});
     print_warnings(simulation);
     if (arguments.threads > 0)
       omp_set_num_threads(arguments.threads);
     RunOptions options;
-    options.output_dir = arguments.output_dir.empty() ? std::filesystem::path("out") / the_case.name
-                                                      : arguments.output_dir;
+    options.output_dir = output_dir_of(arguments, the_case);
     options.threads = omp_get_max_threads();
     options.show_progress = !arguments.quiet;
     fmt::print(stderr, "partimix {}: {} ({} particles, {} threads) -> {}\n", PARTIMIX_VERSION,
-               the_case.name, simulation.store->size(), options.threads,
+               the_case.name, simulation.particle_count(), options.threads,
                options.output_dir.string());
-    print_parameters(*simulation.solver);
+    print_parameters(simulation, the_case);
     install_interrupt_handler();
-    Runner runner(the_case, *simulation.solver, simulation.bodies.get(), options);
-    const io::RunSummary summary = runner.run();
+    Runner runner(the_case, simulation, options);
+    io::RunSummary summary;
+    try {
+      summary = runner.run(checkpoint ? &*checkpoint : nullptr);
+    } catch (const StateError& error) {
+      throw InputError(InputLocation{(arguments.resume_dir / "checkpoints").string(), 0, 0, ""},
+                       fmt::format("the checkpoint does not fit the case: {}", error.what()));
+    }
     const double throughput =
         summary.wall_seconds > 0.0
             ? static_cast<double>(summary.particles * summary.steps) / summary.wall_seconds
@@ -90,8 +124,8 @@ int check_command(const std::string& case_file, const std::vector<std::string>& 
     const io::Case the_case = io::load_case(case_file, overrides);
     const Simulation simulation = build_simulation(the_case);
     print_warnings(simulation);
-    fmt::print(stderr, "{}: valid ({} particles)\n", case_file, simulation.store->size());
-    print_parameters(*simulation.solver);
+    fmt::print(stderr, "{}: valid ({} particles)\n", case_file, simulation.particle_count());
+    print_parameters(simulation, the_case);
     return kExitSuccess;
   } catch (const InputError& error) {
     fmt::print(stderr, "error: {}\n", error.what());

@@ -19,6 +19,10 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--threads,-t", run.threads, "OpenMP threads (default: all cores)")
       ->check(CLI::PositiveNumber);
   run_cmd->add_flag("--quiet,-q", run.quiet, "No progress line");
+  run_cmd
+      ->add_option("--resume", run.resume_dir,
+                   "Resume the run in this output folder from its newest checkpoint")
+      ->excludes("--out");
 
   std::string check_file;
   std::vector<std::string> check_overrides;

@@ -9,92 +9,99 @@
 
 #include <fmt/format.h>
 
-#include "analysis/kinetic_energy.hpp"
-#include "analysis/max_speed.hpp"
 #include "app/interrupt.hpp"
 #include "core/error.hpp"
 #include "core/progress.hpp"
 #include "core/stopwatch.hpp"
+#include "io/checkpoint_folder.hpp"
 #include "io/run_metadata.hpp"
-#include "io/vtk_frame_writer.hpp"
 #include "particles/health.hpp"
 
 namespace partimix::app {
 namespace {
 
-// K_s and n of Reynolds numbers (docs/power.md); the loader admits power numbers only for
-// these models.
-analysis::FlowScales flow_scales(const io::FluidSpec& fluid) {
-  const sph::RheologyConfig& rheology = fluid.rheology;
-  if (rheology.model == "newtonian")
-    return {fluid.density, rheology.viscosity, 1.0};
-  return {fluid.density, rheology.consistency, rheology.flow_index};
+constexpr const char* kCheckpoints = "checkpoints";
+
+std::string method_prefix(const std::string& name) {
+  return "methods/" + name + "/";
 }
 
-analysis::AnalysisOptions options_of(const io::AnalysisSpec& spec, const io::Case& the_case,
-                                     const geometry::MovingBodies* bodies) {
-  analysis::AnalysisOptions options;
-  options.axis = spec.axis;
-  options.diameter = spec.diameter;
-  options.metzner_otto = spec.metzner_otto;
-  options.fluid = flow_scales(the_case.fluid);
-  options.mixing = spec.mixing;
-  options.packing = spec.packing;
-  options.profile = spec.profile;
-  options.repose = spec.repose;
-  if (spec.type == "body_loads" || spec.type == "power_number") {
-    if (bodies == nullptr)
-      throw RunError("the analysis '" + spec.type + "' needs the bodies of the simulation");
-    const auto body = static_cast<std::size_t>(spec.body);
-    options.body = {spec.body, &bodies->motion(body), the_case.walls[body].motion,
-                    spec.vessel_axis_point, spec.average_revolutions};
+std::string joined(const std::vector<io::SeriesColumn>& columns) {
+  std::string text;
+  for (const auto& column : columns)
+    text += column.name + " [" + column.unit + "]\n";
+  return text;
+}
+
+// The frames of a collection as two arrays: times, and paths one per line.
+void save_frames(const MethodOutputs& outputs, StateArchive& archive) {
+  std::vector<double> times;
+  std::string paths;
+  for (const io::PvdEntry& entry : outputs.frames()) {
+    times.push_back(entry.time);
+    paths += entry.path + "\n";
   }
-  return options;
+  archive.put_doubles("frames/" + outputs.name() + "/times", times);
+  archive.put_text("frames/" + outputs.name() + "/paths", paths);
 }
 
-// Kinetic energy reads the particle fields at set-up: its rotational column exists only for
-// particles with angular velocities and radii (DEM).
-std::vector<std::unique_ptr<analysis::Analysis>> make_analyses(const io::Case& the_case,
-                                                               const geometry::MovingBodies* bodies,
-                                                               const ParticleStore& particles) {
-  std::vector<std::unique_ptr<analysis::Analysis>> analyses;
-  analyses.push_back(std::make_unique<analysis::KineticEnergy>(particles));
-  analyses.push_back(std::make_unique<analysis::MaxSpeed>());
-  for (const auto& spec : the_case.analyses) {
-    analyses.push_back(
-        analysis::analysis_registry().create(spec.type, options_of(spec, the_case, bodies)));
+std::vector<io::PvdEntry> restore_frames(const std::string& method, const StateArchive& archive) {
+  const auto times = archive.doubles("frames/" + method + "/times");
+  const std::string& paths = archive.text("frames/" + method + "/paths");
+  std::vector<io::PvdEntry> entries;
+  std::size_t begin = 0;
+  for (const double time : times) {
+    const std::size_t end = paths.find('\n', begin);
+    if (end == std::string::npos)
+      throw StateError("frames/" + method + "/paths: fewer paths than times");
+    entries.push_back({time, paths.substr(begin, end - begin)});
+    begin = end + 1;
   }
-  return analyses;
+  return entries;
 }
 
-std::vector<io::SeriesColumn> series_columns(
-    const std::vector<std::unique_ptr<analysis::Analysis>>& analyses) {
+// Frame files of `method` numbered from `first` on: a resumed run writes them again, and must
+// not leave those of the interrupted run beyond where it stops.
+void remove_frames_from(const std::filesystem::path& frames, const std::string& method,
+                        std::size_t first) {
+  std::error_code error;
+  for (std::size_t k = first;; ++k) {
+    const auto file = frames / fmt::format("{}_{:06d}.vtp", method, k);
+    if (!std::filesystem::remove(file, error))
+      break;
+  }
+}
+
+}  // namespace
+
+Runner::Runner(const io::Case& the_case, Simulation& simulation, RunOptions options)
+    : case_(the_case),
+      simulation_(simulation),
+      options_(std::move(options)),
+      clock_(the_case, simulation) {
+  for (std::size_t m = 0; m < simulation.methods.size(); ++m)
+    outputs_.emplace_back(the_case, m, simulation.methods[m]);
+}
+
+std::vector<io::SeriesColumn> Runner::series_columns() const {
   std::vector<io::SeriesColumn> columns{{"time", "s"}, {"step", ""}, {"dt", "s"}};
-  for (const auto& a : analyses) {
-    for (const auto& column : a->columns())
+  for (const MethodOutputs& outputs : outputs_) {
+    for (const auto& column : outputs.columns(!case_.single_method()))
       columns.push_back(column);
   }
   return columns;
 }
 
-}  // namespace
-
-Runner::Runner(const io::Case& the_case, Solver& solver, const geometry::MovingBodies* bodies,
-               RunOptions options)
-    : case_(the_case),
-      solver_(solver),
-      options_(std::move(options)),
-      analyses_(make_analyses(the_case, bodies, solver.particles())) {
-  for (const auto& a : analyses_)
-    needs_body_forces_ = needs_body_forces_ || a->needs_body_forces();
-}
-
-// Removes what an earlier run left in the folder, so that no stale frame mixes in.
-void Runner::prepare_output_dir() const {
+// Removes what an earlier run left in the folder, so that no stale frame or checkpoint mixes in.
+void Runner::start_fresh() {
   namespace fs = std::filesystem;
   const fs::path& out = options_.output_dir;
+  std::vector<std::string> products{"frames",   "plots",         "series.csv",
+                                    "run.json", "particles.pvd", kCheckpoints};
+  for (const MethodOutputs& outputs : outputs_)
+    products.push_back(outputs.collection_name());
   std::error_code error;
-  for (const char* product : {"frames", "plots", "series.csv", "run.json", "particles.pvd"}) {
+  for (const std::string& product : products) {
     fs::remove_all(out / product, error);
     if (error)
       break;
@@ -105,55 +112,145 @@ void Runner::prepare_output_dir() const {
     throw RunError(
         fmt::format("cannot prepare the output folder {}: {}", out.string(), error.message()));
   }
+  series_ = std::make_unique<io::SeriesWriter>(out / "series.csv", series_columns());
+  for (MethodOutputs& outputs : outputs_)
+    outputs.open_frames(out, {});
+  state_ = RunState{};
+  state_.next_sample = case_.time.sample_interval;
+  state_.next_frame = case_.time.output_interval;
+  state_.next_checkpoint = case_.time.checkpoint_interval;
 }
 
-void Runner::sample(double time, std::size_t steps, double dt) {
-  row_.clear();
-  row_.push_back(time);
-  row_.push_back(static_cast<double>(steps));
-  row_.push_back(dt);
-  if (needs_body_forces_)
-    solver_.update_body_forces();
-  for (const auto& a : analyses_) {
+// The methods, couplings and clock from the checkpoint; then series.csv and the collections
+// rewritten to what they were when it was written, and the analyses given their history back.
+void Runner::start_from(const StateArchive& checkpoint) {
+  const std::filesystem::path& out = options_.output_dir;
+  for (std::size_t m = 0; m < simulation_.methods.size(); ++m)
+    simulation_.methods[m].solver->restore(checkpoint, method_prefix(case_.methods[m].name));
+  for (std::size_t c = 0; c < simulation_.couplings.size(); ++c)
+    simulation_.couplings[c]->restore(checkpoint, fmt::format("couplings/{}/", c));
+  state_ = restore_run_state(checkpoint);
+  const std::vector<io::SeriesColumn> columns = series_columns();
+  if (checkpoint.text("series/columns") != joined(columns))
+    throw StateError("series/columns: the checkpoint's analyses differ from the case's");
+  const auto rows = checkpoint.doubles("series/rows", columns.size());
+  rows_.assign(rows.begin(), rows.end());
+  for (std::size_t first = 0; first < rows_.size(); first += columns.size()) {
+    const std::span<const double> row(&rows_[first], columns.size());
+    std::size_t offset = 3;
+    for (MethodOutputs& outputs : outputs_) {
+      outputs.replay(row[0], row.subspan(offset, outputs.column_count()));
+      offset += outputs.column_count();
+    }
+  }
+  std::filesystem::create_directories(out / "frames");
+  series_ = std::make_unique<io::SeriesWriter>(out / "series.csv", columns, rows_);
+  for (MethodOutputs& outputs : outputs_) {
+    std::vector<io::PvdEntry> entries = restore_frames(outputs.name(), checkpoint);
+    remove_frames_from(out / "frames", outputs.name(), entries.size());
+    outputs.open_frames(out, std::move(entries));
+  }
+}
+
+void Runner::sample(double time, std::uint64_t steps, double dt) {
+  row_.assign({time, static_cast<double>(steps), dt});
+  for (MethodOutputs& outputs : outputs_) {
     const std::size_t first = row_.size();
-    row_.resize(first + a->columns().size());
-    a->sample(solver_.particles(), time, std::span<double>(row_).subspan(first));
+    row_.resize(first + outputs.column_count());
+    outputs.sample(time, std::span<double>(row_).subspan(first));
   }
   series_->write_row(row_);
-  last_sample_time_ = time;
+  rows_.insert(rows_.end(), row_.begin(), row_.end());
+  state_.last_sample_time = time;
 }
 
-void Runner::write_frame(double time) {
-  const std::string name = fmt::format("frames/particles_{:06d}.vtp", frames_written_);
-  io::write_vtp_frame(options_.output_dir / name, solver_.particles(), time);
-  collection_->add(time, name);
-  ++frames_written_;
-  last_frame_time_ = time;
+void Runner::write_frames(double time) {
+  for (MethodOutputs& outputs : outputs_)
+    outputs.write_frame(options_.output_dir, time);
+  state_.last_frame_time = time;
+}
+
+// Everything the run needs to go on (docs/architecture-notes.md, "Checkpoints"), in
+// checkpoints/checkpoint_<step>.h5; the last two are kept.
+void Runner::write_checkpoint() {
+  StateArchive archive;
+  archive.put_text("case/file", case_.file);
+  archive.put_text("case/resolved", case_.resolved.dump());
+  save_run_state(state_, archive);
+  const std::vector<io::SeriesColumn> columns = series_columns();
+  archive.put_text("series/columns", joined(columns));
+  archive.put_doubles("series/rows", rows_, columns.size());
+  for (std::size_t m = 0; m < simulation_.methods.size(); ++m) {
+    simulation_.methods[m].solver->save(archive, method_prefix(case_.methods[m].name));
+    save_frames(outputs_[m], archive);
+  }
+  for (std::size_t c = 0; c < simulation_.couplings.size(); ++c)
+    simulation_.couplings[c]->save(archive, fmt::format("couplings/{}/", c));
+  const io::CheckpointFolder folder(options_.output_dir / kCheckpoints);
+  last_checkpoint_ = folder.write(state_.steps, archive);
 }
 
 void Runner::write_metadata(const io::RunSummary& summary) const {
-  nlohmann::json parameters;
-  for (const auto& [name, value] : solver_.derived_parameters())
-    parameters[name] = value;
+  const bool prefixed = !case_.single_method();
+  nlohmann::json parameters = nlohmann::json::object();
+  nlohmann::json methods = nlohmann::json::array();
+  for (std::size_t m = 0; m < simulation_.methods.size(); ++m) {
+    const io::MethodInstance& method = simulation_.methods[m];
+    const std::string& name = case_.methods[m].name;
+    for (const auto& [parameter, value] : method.solver->derived_parameters())
+      parameters[prefixed ? name + "." + parameter : parameter] = value;
+    methods.push_back({{"name", name},
+                       {"sub_steps", case_.methods[m].sub_steps},
+                       {"particles", method.store->size()}});
+  }
   nlohmann::json figures = nlohmann::json::object();
   for (const auto& [name, value] : figures_)
     figures[name] = value;
-  const nlohmann::json content{{"partimix_version", PARTIMIX_VERSION},
-                               {"case_file", case_.file},
-                               {"case", case_.resolved},
-                               {"derived", parameters},
-                               {"run", io::to_json(summary)},
-                               {"figures", figures}};
+  nlohmann::json content{{"partimix_version", PARTIMIX_VERSION},
+                         {"case_file", case_.file},
+                         {"case", case_.resolved},
+                         {"methods", methods},
+                         {"derived", parameters},
+                         {"run", io::to_json(summary)},
+                         {"figures", figures}};
+  if (!last_checkpoint_.empty())
+    content["checkpoint"] = last_checkpoint_.lexically_relative(options_.output_dir).string();
   io::write_run_json(options_.output_dir / "run.json", content);
 }
 
-io::RunSummary Runner::run() {
-  prepare_output_dir();
-  series_ = std::make_unique<io::SeriesWriter>(options_.output_dir / "series.csv",
-                                               series_columns(analyses_));
-  collection_ = std::make_unique<io::PvdWriter>(options_.output_dir / "particles.pvd");
+// One step of the clock; false (and the summary says why) when the run cannot go on.
+bool Runner::step_once(io::RunSummary& summary) {
+  const double tolerance = 1e-9 * case_.time.end;
+  std::string why;
+  const std::optional<double> dt = clock_.next_step(case_.time.end - state_.time, why);
+  if (dt && !(*dt > tolerance))
+    why = fmt::format("the time step fell to {:.3g} s", *dt);
+  if (!why.empty()) {
+    summary.status = "failed";
+    summary.message = fmt::format("step {}, t = {:.6g} s: {}", state_.steps, state_.time, why);
+    return false;
+  }
+  clock_.advance(state_.time, *dt);
+  state_.time += *dt;
+  ++state_.steps;
+  state_.last_dt = *dt;
+  for (const io::MethodInstance& method : simulation_.methods) {
+    if (const auto bad = find_bad_particle(*method.store, method.solver->domain())) {
+      summary.status = "failed";
+      summary.message = fmt::format("step {}, t = {:.6g} s: {}", state_.steps, state_.time, *bad);
+      return false;
+    }
+  }
+  return true;
+}
+
+io::RunSummary Runner::run(const StateArchive* checkpoint) {
+  if (checkpoint != nullptr)
+    start_from(*checkpoint);
+  else
+    start_fresh();
   const io::TimeControl& time = case_.time;
-  const std::size_t particles = solver_.particles().size();
+  const std::size_t particles = simulation_.particle_count();
   io::RunSummary summary{"running", "", particles, 0, 0.0, 0.0, options_.threads};
   write_metadata(summary);
   std::optional<Progress> progress;
@@ -161,65 +258,71 @@ io::RunSummary Runner::run() {
     progress.emplace(time.end, stderr, isatty(fileno(stderr)) != 0);
   Stopwatch wall;
   const double tolerance = 1e-9 * time.end;
-  double t = 0.0;
-  std::size_t steps = 0;
-  double last_dt = 0.0;
-  sample(t, steps, 0.0);
-  if (case_.output.frames)
-    write_frame(t);
-  double next_sample = time.sample_interval;
-  double next_frame = time.output_interval;
+  if (checkpoint == nullptr) {
+    sample(0.0, 0, 0.0);
+    if (case_.output.frames)
+      write_frames(0.0);
+  }
   summary.status = "completed";
-  while (t < time.end - tolerance) {
+  while (state_.time < time.end - tolerance) {
     if (interrupt_requested()) {
       summary.status = "interrupted";
-      summary.message = fmt::format("interrupted at step {}, t = {:.6g} s", steps, t);
-      break;
-    }
-    const double dt = std::min(solver_.stable_dt(), time.end - t);
-    last_dt = dt;
-    if (!(dt > tolerance)) {
-      summary.status = "failed";
       summary.message =
-          fmt::format("step {}, t = {:.6g} s: the time step fell to {:.3g} s", steps, t, dt);
+          fmt::format("interrupted at step {}, t = {:.6g} s", state_.steps, state_.time);
+      write_checkpoint();
       break;
     }
-    solver_.step(dt);
-    t += dt;
-    ++steps;
-    if (const auto bad = find_bad_particle(solver_.particles(), solver_.domain())) {
-      summary.status = "failed";
-      summary.message = fmt::format("step {}, t = {:.6g} s: {}", steps, t, *bad);
+    if (!step_once(summary))
       break;
+    const double t = state_.time;
+    if (t >= state_.next_sample - tolerance) {
+      sample(t, state_.steps, state_.last_dt);
+      while (state_.next_sample <= t + tolerance)
+        state_.next_sample += time.sample_interval;
     }
-    if (t >= next_sample - tolerance) {
-      sample(t, steps, dt);
-      while (next_sample <= t + tolerance)
-        next_sample += time.sample_interval;
+    if (case_.output.frames && t >= state_.next_frame - tolerance) {
+      write_frames(t);
+      while (state_.next_frame <= t + tolerance)
+        state_.next_frame += time.output_interval;
     }
-    if (case_.output.frames && t >= next_frame - tolerance) {
-      write_frame(t);
-      while (next_frame <= t + tolerance)
-        next_frame += time.output_interval;
+    if (time.checkpoint_interval > 0.0 && t >= state_.next_checkpoint - tolerance) {
+      while (state_.next_checkpoint <= t + tolerance)
+        state_.next_checkpoint += time.checkpoint_interval;
+      state_.wall_seconds += wall.seconds();
+      wall.restart();
+      write_checkpoint();
+      summary.steps = state_.steps;
+      summary.simulated_time = t;
+      summary.wall_seconds = state_.wall_seconds;
+      summary.status = "running";
+      write_metadata(summary);
+      summary.status = "completed";
     }
     if (progress)
-      progress->update(t, steps, particles);
-  }
-  if (summary.status != "failed") {
-    if (last_sample_time_ != t)
-      sample(t, steps, last_dt);
-    if (case_.output.frames && last_frame_time_ != t)
-      write_frame(t);
+      progress->update(t, state_.steps, particles);
   }
   if (progress)
     progress->finish();
-  summary.steps = steps;
-  summary.simulated_time = t;
-  summary.wall_seconds = wall.seconds();
-  for (const auto& a : analyses_)
-    a->add_figures(figures_);
-  write_metadata(summary);
+  state_.wall_seconds += wall.seconds();
+  finish(summary);
   return summary;
+}
+
+// The last sample and frame at the time the run stopped (unless it failed), the figures and
+// run.json.
+void Runner::finish(io::RunSummary& summary) {
+  if (summary.status != "failed") {
+    if (state_.last_sample_time != state_.time)
+      sample(state_.time, state_.steps, state_.last_dt);
+    if (case_.output.frames && state_.last_frame_time != state_.time)
+      write_frames(state_.time);
+  }
+  summary.steps = state_.steps;
+  summary.simulated_time = state_.time;
+  summary.wall_seconds = state_.wall_seconds;
+  for (const MethodOutputs& outputs : outputs_)
+    outputs.add_figures(figures_, !case_.single_method());
+  write_metadata(summary);
 }
 
 }  // namespace partimix::app

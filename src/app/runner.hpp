@@ -1,20 +1,23 @@
 #pragma once
-// The run loop (DESIGN.md, "One run"): step the solver with its stable time step, sample the
-// analyses into series.csv, write VTK frames and the .pvd collection, report progress, and
-// stop cleanly on Ctrl-C or with a reason on a blow-up (keeping the last good frame).
+// The run loop (DESIGN.md, "One run"): step the methods on one clock (app/run_clock.hpp),
+// sample their analyses into series.csv, write each method's VTK frames and .pvd collection,
+// write checkpoints, report progress, and stop cleanly on Ctrl-C (after a frame and a
+// checkpoint) or with a reason on a blow-up (keeping the last good frame). A run can start from
+// a checkpoint and then goes on exactly as the run that wrote it would have.
 #include <filesystem>
 #include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "analysis/analysis.hpp"
-#include "geometry/moving_bodies.hpp"
+#include "app/method_outputs.hpp"
+#include "app/run_clock.hpp"
+#include "app/run_state.hpp"
+#include "app/simulation.hpp"
+#include "core/state_archive.hpp"
 #include "io/case.hpp"
-#include "io/pvd_writer.hpp"
 #include "io/run_metadata.hpp"
 #include "io/series_writer.hpp"
-#include "particles/solver.hpp"
 
 namespace partimix::app {
 
@@ -26,36 +29,42 @@ struct RunOptions {
 
 class Runner {
  public:
-  // `bodies` (may be null when the case has no load analyses) are the bodies of the solver.
-  Runner(const io::Case& the_case, Solver& solver, const geometry::MovingBodies* bodies,
-         RunOptions options);
+  // `simulation` is built from `the_case` (build_simulation) and outlives the runner.
+  Runner(const io::Case& the_case, Simulation& simulation, RunOptions options);
 
-  // Runs to the case's end time; returns the summary also written to run.json
-  // (status: completed, interrupted or failed).
-  io::RunSummary run();
+  // Runs to the case's end time; returns the summary also written to run.json (status:
+  // completed, interrupted or failed). With a checkpoint (of this case, app/checkpoint_match),
+  // the methods, the analyses, series.csv and the frame collections are first put back where
+  // the checkpoint left them (the simulation must then be built with for_restore); throws
+  // StateError when the checkpoint does not fit the simulation.
+  io::RunSummary run(const StateArchive* checkpoint = nullptr);
 
   // The analyses' summary figures (time averages, final values) of the last run, also in
   // run.json under "figures".
   const std::map<std::string, double>& figures() const { return figures_; }
 
  private:
-  void prepare_output_dir() const;
-  void sample(double time, std::size_t steps, double dt);
-  void write_frame(double time);
+  void start_fresh();
+  void start_from(const StateArchive& checkpoint);
+  void sample(double time, std::uint64_t steps, double dt);
+  void write_frames(double time);
+  void write_checkpoint();
   void write_metadata(const io::RunSummary& summary) const;
+  std::vector<io::SeriesColumn> series_columns() const;
+  bool step_once(io::RunSummary& summary);
+  void finish(io::RunSummary& summary);
 
   const io::Case& case_;
-  Solver& solver_;
+  Simulation& simulation_;
   RunOptions options_;
-  std::vector<std::unique_ptr<analysis::Analysis>> analyses_;
+  RunClock clock_;
+  std::vector<MethodOutputs> outputs_;  // one per method
   std::unique_ptr<io::SeriesWriter> series_;
-  std::unique_ptr<io::PvdWriter> collection_;
+  std::vector<double> rows_;  // every row sampled, full precision, for checkpoints
   std::vector<double> row_;
+  RunState state_;
   std::map<std::string, double> figures_;
-  bool needs_body_forces_ = false;
-  std::size_t frames_written_ = 0;
-  double last_frame_time_ = -1.0;
-  double last_sample_time_ = -1.0;
+  std::filesystem::path last_checkpoint_;
 };
 
 }  // namespace partimix::app

@@ -1,31 +1,28 @@
 #pragma once
-// A simulation built from a case (DESIGN.md, "One run"): the particle store filled from the
-// case geometry, and the solver chosen by the case's `solver` key.
+// A simulation built from a case (DESIGN.md, "One run"): one instance of each method the case
+// runs (its particles, bodies and solver), in the order of `solver`, and the couplings between
+// them. The app builds methods through the method registry only.
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "core/error.hpp"
-#include "geometry/moving_bodies.hpp"
+#include "coupling/coupling.hpp"
 #include "io/case.hpp"
-#include "particles/particle_store.hpp"
-#include "particles/solver.hpp"
+#include "io/method_type.hpp"
 
 namespace partimix::app {
 
 struct Simulation {
-  std::unique_ptr<ParticleStore> store;
-  std::unique_ptr<geometry::MovingBodies> bodies;  // one per wall of the case
-  std::unique_ptr<Solver> solver;
+  std::vector<io::MethodInstance> methods;  // parallel to the case's methods
+  std::vector<std::unique_ptr<coupling::Coupling>> couplings;
   std::vector<std::string> warnings;  // about the case as built, e.g. a see-through solid wall
+
+  // All particles of all methods.
+  std::size_t particle_count() const;
 };
 
 // Throws InputError (naming the case key) when the case cannot be built, e.g. particles that
 // fall outside the domain or a periodic axis too short for the kernel.
-Simulation build_simulation(const io::Case& the_case);
-
-// An InputError of the case file at `key` (no line: the case is loaded; the problem shows when it
-// is built).
-InputError case_error(const io::Case& the_case, const std::string& key, const std::string& what);
+Simulation build_simulation(const io::Case& the_case, const io::BuildOptions& options = {});
 
 }  // namespace partimix::app

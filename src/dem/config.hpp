@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "dem/pair_properties.hpp"
-#include "dem/wall_surface.hpp"
 #include "geometry/motion.hpp"
+#include "geometry/surface.hpp"
 
 namespace partimix::dem {
 
@@ -24,9 +24,11 @@ struct Interaction {
 };
 
 struct WallConfig {
-  std::shared_ptr<const WallSurface> surface;  // in the wall's frame at t = 0
+  std::shared_ptr<const geometry::Surface> surface;  // in the wall's frame at t = 0
   geometry::MotionConfig motion;
   Material material{2.0e11, 0.3};
+  // Species a with this wall: interactions[a]; empty: Config::wall_interactions.
+  std::vector<Interaction> interactions;
 };
 
 struct Config {
@@ -40,7 +42,11 @@ struct Config {
   std::vector<Species> species;
   // Species a with species b: particle_interactions[a * species.size() + b] (symmetric).
   std::vector<Interaction> particle_interactions;
-  std::vector<Interaction> wall_interactions;  // species a with any wall
+  std::vector<Interaction> wall_interactions;  // species a with a wall, unless the wall says
+  // Species a with wall w: wall_interactions or the wall's own.
+  const Interaction& wall_interaction(std::size_t w, std::size_t a) const {
+    return walls[w].interactions.empty() ? wall_interactions[a] : walls[w].interactions[a];
+  }
   std::vector<WallConfig> walls;
 };
 

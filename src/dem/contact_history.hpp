@@ -6,8 +6,10 @@
 // contact is known by its partner: a particle id (>= 0) or a wall, -(wall index + 1).
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
+#include "core/state_archive.hpp"
 #include "core/vec.hpp"
 
 namespace partimix::dem {
@@ -45,6 +47,12 @@ class ContactHistory {
   void reorder(std::span<const std::uint32_t> new_to_old);
 
   std::size_t bytes() const;
+
+  // The live contacts (counts, partners and springs) for a checkpoint, under `prefix`. restore()
+  // throws StateError when they do not fit this history (another particle count, a count above
+  // the capacity).
+  void save(StateArchive& archive, const std::string& prefix) const;
+  void restore(const StateArchive& archive, const std::string& prefix);
 
  private:
   int capacity_;

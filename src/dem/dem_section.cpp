@@ -1,28 +1,29 @@
-#include "io/dem_section.hpp"
+#include "dem/dem_section.hpp"
+
+#include <filesystem>
 
 #include <fmt/format.h>
 
 #include "core/error.hpp"
-#include "dem/cone_wall.hpp"
-#include "dem/drum_wall.hpp"
-#include "dem/mesh_wall.hpp"
-#include "dem/plane_wall.hpp"
-#include "geometry/stl_reader.hpp"
-#include "io/motion_section.hpp"
 #include "io/shape_section.hpp"
 
-namespace partimix::io {
+namespace partimix::dem {
 namespace {
 
-dem::Material read_material(Reader& section, const dem::Material& fallback) {
+using io::at_least;
+using io::kNonNegative;
+using io::kPositive;
+using io::Reader;
+
+Material read_material(Reader& section, const Material& fallback) {
   return {section.optional<double>("youngs_modulus", fallback.youngs_modulus, kPositive),
           section.optional<double>("poisson_ratio", fallback.poisson_ratio, kNonNegative)};
 }
 
-std::vector<dem::Species> read_species(Reader& section) {
-  std::vector<dem::Species> species;
+std::vector<Species> read_species(Reader& section) {
+  std::vector<Species> species;
   for (Reader& item : section.list("species")) {
-    dem::Species s;
+    Species s;
     s.name = item.required<std::string>("name");
     if (s.name == "wall")
       throw item.error("name", "'wall' names the walls in interactions.pairs; choose another");
@@ -36,8 +37,8 @@ std::vector<dem::Species> read_species(Reader& section) {
   return species;
 }
 
-dem::Interaction read_interaction(Reader& section, const dem::Interaction& fallback) {
-  dem::Interaction i;
+Interaction read_interaction(Reader& section, const Interaction& fallback) {
+  Interaction i;
   i.restitution = section.optional<double>("restitution", fallback.restitution, kPositive);
   if (i.restitution > 1.0)
     throw section.error("restitution", "must lie in (0, 1]");
@@ -48,7 +49,7 @@ dem::Interaction read_interaction(Reader& section, const dem::Interaction& fallb
 }
 
 // The index of the species named by `key`; -1 for "wall" (the walls).
-int species_index(Reader& item, const std::string& key, const std::vector<dem::Species>& species) {
+int species_index(Reader& item, const std::string& key, const std::vector<Species>& species) {
   const std::string name = item.required<std::string>(key);
   if (name == "wall")
     return -1;
@@ -60,13 +61,13 @@ int species_index(Reader& item, const std::string& key, const std::vector<dem::S
 }
 
 // `interactions`: `particle` and `wall` defaults, then `pairs` overriding single pairs.
-void read_interactions(Reader& section, dem::Config& config) {
+void read_interactions(Reader& section, Config& config) {
   Reader interactions = section.optional_map("interactions");
   Reader particle = interactions.optional_map("particle");
-  const dem::Interaction grains = read_interaction(particle, {});
+  const Interaction grains = read_interaction(particle, {});
   particle.done();
   Reader wall = interactions.optional_map("wall");
-  const dem::Interaction walls = read_interaction(wall, grains);
+  const Interaction walls = read_interaction(wall, grains);
   wall.done();
   const std::size_t n = config.species.size();
   config.particle_interactions.assign(n * n, grains);
@@ -87,58 +88,44 @@ void read_interactions(Reader& section, dem::Config& config) {
   interactions.done();
 }
 
-std::shared_ptr<const dem::WallSurface> read_surface(Reader& item,
-                                                     const std::filesystem::path& folder) {
-  const std::string surface = item.required_choice("surface", {"plane", "drum", "cone", "mesh"});
-  if (surface == "plane")
-    return std::make_shared<dem::PlaneWall>(item.vector("point", 3), item.vector("normal", 3));
-  if (surface == "drum") {
-    return std::make_shared<dem::DrumWall>(item.vector("axis_point", 3), item.vector("axis", 3),
-                                           item.required<double>("radius", kPositive));
+// One wall of the case as the grains see it: the species' interactions with it are the wall
+// material's coefficients where it gives them, dem.interactions' otherwise.
+WallConfig wall_config(const io::WallSpec& wall, const std::vector<Interaction>& defaults) {
+  WallConfig config{wall.surface,
+                    wall.motion,
+                    Material{wall.material.youngs_modulus, wall.material.poisson_ratio},
+                    {}};
+  const io::WallMaterial& m = wall.material;
+  if (!m.restitution && !m.friction && !m.rolling_friction)
+    return config;
+  for (const Interaction& fallback : defaults) {
+    config.interactions.push_back({m.restitution.value_or(fallback.restitution),
+                                   m.friction.value_or(fallback.friction),
+                                   m.rolling_friction.value_or(fallback.rolling_friction)});
   }
-  if (surface == "cone") {
-    return std::make_shared<dem::ConeWall>(item.vector("axis_point", 3), item.vector("axis", 3),
-                                           item.required<double>("radius_0", kNonNegative),
-                                           item.required<double>("radius_1", kNonNegative),
-                                           item.required<double>("height", kPositive));
-  }
-  const std::string file = item.required<std::string>("file");
-  const double scale = item.optional<double>("scale", 1.0, kPositive);
-  const Vec3 offset = item.vector("offset", 3, Vec3::Zero());
-  try {
-    geometry::TriangleSoup triangles = geometry::read_stl((folder / file).string(), scale);
-    for (geometry::Triangle& t : triangles)
-      for (Vec3& corner : t.corner)
-        corner += offset;
-    return std::make_shared<dem::MeshWall>(triangles);
-  } catch (const InputError& error) {
-    throw item.error("file", fmt::format("cannot use the mesh: {}", error.what()));
-  }
+  return config;
 }
 
-std::vector<dem::WallConfig> read_dem_walls(Reader& section, const std::filesystem::path& folder) {
-  Reader material_section = section.optional_map("wall_material");
-  const dem::Material material = read_material(material_section, dem::WallConfig{}.material);
-  material_section.done();
-  std::vector<dem::WallConfig> walls;
-  for (Reader& item : section.optional_list("walls")) {
-    dem::WallConfig wall;
-    wall.surface = read_surface(item, folder);
-    wall.motion = read_motion(item, 3);
-    wall.material = material;
-    item.done();
-    walls.push_back(wall);
+// The walls are the case's shared ones; the keys that held DEM walls before say where they are.
+void refuse_old_wall_keys(Reader& section) {
+  for (const std::string key : {"walls", "wall_material"}) {
+    if (section.contains(key)) {
+      throw section.error(key,
+                          "DEM walls are now the case's top-level `walls:` list, shared by "
+                          "every method: move each item there with `shape:` in place of "
+                          "`surface:` and give it `material: {youngs_modulus, poisson_ratio}` "
+                          "(docs/case-reference.md, \"walls\")");
+    }
   }
-  return walls;
 }
 
 GrainFill read_fill(Reader& section, const std::filesystem::path& folder) {
   Reader fill = section.map("fill");
   GrainFill result;
   Reader region = fill.map("region");
-  result.region = read_shape(region, 3, folder);
+  result.region = io::read_shape(region, 3, folder);
   region.done();
-  dem::InsertionRequest& request = result.insertion;
+  InsertionRequest& request = result.insertion;
   request.count = fill.required<int>("count", at_least(1));
   request.radius_min = fill.required<double>("radius", kPositive);
   request.radius_max = fill.optional<double>("radius_max", request.radius_min, kPositive);
@@ -157,10 +144,13 @@ GrainFill read_fill(Reader& section, const std::filesystem::path& folder) {
 
 }  // namespace
 
-DemSpec read_dem(Reader& root, const std::filesystem::path& case_folder) {
+std::shared_ptr<DemSection> read_dem_section(Reader& root, const io::Case& the_case) {
+  if (the_case.domain.dimensions != 3)
+    throw root.error("dimensions", "the DEM solver needs dimensions: 3");
   Reader section = root.map("dem");
-  DemSpec spec;
-  dem::Config& config = spec.config;
+  refuse_old_wall_keys(section);
+  auto spec = std::make_shared<DemSection>();
+  Config& config = spec->config;
   config.normal_law = section.choice("normal_law", config.normal_law, {"hertz", "linear"});
   config.linear_stiffness =
       section.optional<double>("linear_stiffness", config.linear_stiffness, kNonNegative);
@@ -176,10 +166,11 @@ DemSpec read_dem(Reader& root, const std::filesystem::path& case_folder) {
   config.sort_interval = section.optional<int>("sort_interval", config.sort_interval, at_least(1));
   config.species = read_species(section);
   read_interactions(section, config);
-  config.walls = read_dem_walls(section, case_folder);
-  spec.fill = read_fill(section, case_folder);
+  for (const io::WallSpec& wall : the_case.walls)
+    config.walls.push_back(wall_config(wall, config.wall_interactions));
+  spec->fill = read_fill(section, std::filesystem::path(the_case.file).parent_path());
   section.done();
   return spec;
 }
 
-}  // namespace partimix::io
+}  // namespace partimix::dem

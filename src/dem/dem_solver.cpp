@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "dem/tangential_contact.hpp"
 #include "dem/time_step.hpp"
+#include "particles/store_state.hpp"
 
 namespace partimix::dem {
 
@@ -129,7 +130,7 @@ void DemSolver::make_walls() {
     walls_.back().pose = at_rest(walls_.back().motion->pose(0.0));
     for (std::size_t a = 0; a < n; ++a) {
       wall_materials_.push_back(material_pair(config_.species[a].material, wall.material,
-                                              config_.wall_interactions[a].restitution));
+                                              config_.wall_interaction(w, a).restitution));
     }
   }
 }
@@ -262,7 +263,7 @@ void DemSolver::loads_on(std::size_t i, double dt, bool& overflow) {
   for (std::size_t w = 0; w < walls_.size(); ++w) {
     const geometry::RigidPose& pose = walls_[w].pose;
     const Vec3 local = pose.rotation.transpose() * (x[i] - pose.origin) + pose.start_origin;
-    SurfacePoint surface;
+    geometry::SurfacePoint surface;
     if (!walls_[w].surface->nearest(local, radius[i], surface) || surface.gap >= radius[i])
       continue;
     Contact c;
@@ -276,7 +277,7 @@ void DemSolver::loads_on(std::size_t i, double dt, bool& overflow) {
     c.pair = pair_properties(wall_materials_[w * n_species + s_i], radius[i],
                              std::numeric_limits<double>::infinity(), m[i],
                              std::numeric_limits<double>::infinity());
-    c.interaction = &config_.wall_interactions[s_i];
+    c.interaction = &config_.wall_interaction(w, static_cast<std::size_t>(s_i));
     c.rolling_inertia = inertia_i;
     add(c);
   }
@@ -328,6 +329,32 @@ std::map<std::string, double> DemSolver::derived_parameters() const {
           {"time_step [s]", time_step_},
           {"largest_radius [m]", largest_radius_},
           {"contact_slots [-]", static_cast<double>(history_->capacity())}};
+}
+
+// The walls' poses are not saved: each step sets them from the time before it uses them.
+void DemSolver::save(StateArchive& archive, const std::string& prefix) const {
+  save_store(store_, archive, prefix);
+  history_->save(archive, prefix + "contacts/");
+  archive.put_doubles(prefix + "clock", std::vector<double>{time_, time_step_, rayleigh_time_});
+  archive.put_integers(prefix + "steps", std::vector<std::int64_t>{steps_, walls_frozen_ ? 1 : 0});
+  archive.put_doubles(prefix + "settling", std::vector<double>{settle_time_, settle_energy_});
+}
+
+void DemSolver::restore(const StateArchive& archive, const std::string& prefix) {
+  restore_store(store_, archive, prefix);
+  history_->restore(archive, prefix + "contacts/");
+  const auto clock = archive.doubles(prefix + "clock");
+  const auto steps = archive.integers(prefix + "steps");
+  const auto settling = archive.doubles(prefix + "settling");
+  if (clock.size() != 3 || steps.size() != 2 || settling.size() != 2)
+    throw StateError(prefix + ": the clock, steps or settling entries have the wrong size");
+  time_ = clock[0];
+  time_step_ = clock[1];
+  rayleigh_time_ = clock[2];
+  steps_ = steps[0];
+  walls_frozen_ = steps[1] != 0;
+  settle_time_ = settling[0];
+  settle_energy_ = settling[1];
 }
 
 double DemSolver::mean_contacts() const {

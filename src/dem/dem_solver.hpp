@@ -32,6 +32,8 @@ class DemSolver final : public Solver {
   double stable_dt() const override { return time_step_; }
   void step(double dt) override;
   std::map<std::string, double> derived_parameters() const override;
+  void save(StateArchive& archive, const std::string& prefix) const override;
+  void restore(const StateArchive& archive, const std::string& prefix) override;
 
   // While frozen the walls stay where their motions put them at t = 0 (settling).
   void freeze_walls(bool frozen) { walls_frozen_ = frozen; }
@@ -49,7 +51,7 @@ class DemSolver final : public Solver {
 
  private:
   struct WallState {
-    const WallSurface* surface = nullptr;
+    const geometry::Surface* surface = nullptr;
     std::unique_ptr<geometry::Motion> motion;
     geometry::RigidPose pose;
   };

@@ -1,5 +1,6 @@
 #include "geometry/lattice.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace partimix::geometry {
@@ -11,30 +12,70 @@ struct LatticeBox {
   std::array<long, 3> count{1, 1, 1};
 };
 
+// One axis of the lattice: start + i spacing for i < count.
+struct AxisLattice {
+  double start = 0.0;
+  long count = 0;
+};
+
+// The number of whole spacings in [from, to], rounded (none when the interval is empty).
+long spacings_in(double from, double to, double spacing) {
+  return to > from ? std::lround((to - from) / spacing) : 0L;
+}
+
+// The points from + (i + 1/2) spacing up to about `to` (half a spacing from each end when the
+// length is a whole number of spacings).
+AxisLattice counted_up(double from, double to, double spacing) {
+  return {from + 0.5 * spacing, spacings_in(from, to, spacing)};
+}
+
+// The same lattice counted down from `to`: to - (i + 1/2) spacing down to about `from`.
+AxisLattice counted_down(double from, double to, double spacing) {
+  const long count = spacings_in(from, to, spacing);
+  return {to - (static_cast<double>(count) - 0.5) * spacing, count};
+}
+
+// The shape's extent [lo - margin, hi + margin] along one axis, cut at the domain's face where
+// the shape has no end there (lattice.hpp): an infinite bound, or a huge one, farther beyond
+// the face than the domain's length plus the margin. An uncut extent gives the lattice it
+// always had.
+AxisLattice axis_lattice(double lo, double hi, double margin, double spacing, double domain_lo,
+                         double domain_hi) {
+  const double reach = (domain_hi - domain_lo) + margin;
+  const bool cut_lo = !(lo >= domain_lo - reach);
+  const bool cut_hi = !(hi <= domain_hi + reach);
+  if (!cut_lo)
+    return counted_up(lo - margin, cut_hi ? domain_hi : hi + margin, spacing);
+  if (!cut_hi)
+    return counted_down(domain_lo, hi + margin, spacing);
+  return counted_up(domain_lo, domain_hi, spacing);
+}
+
 LatticeBox lattice_box(const Shape& shape, double spacing, double margin, const Domain& domain) {
   LatticeBox box;
   const Vec3 lo = shape.lower();
   const Vec3 hi = shape.upper();
   for (int axis = 0; axis < domain.dimensions; ++axis) {
-    double from = lo[axis] - margin;
-    double to = hi[axis] + margin;
-    if (domain.periodic[axis]) {
-      from = domain.lo[axis];
-      to = domain.hi[axis];
-    }
-    box.start[axis] = from + 0.5 * spacing;
-    box.count[axis] = std::max(0L, std::lround((to - from) / spacing));
+    const AxisLattice lattice =
+        domain.periodic[axis]
+            ? counted_up(domain.lo[axis], domain.hi[axis], spacing)
+            : axis_lattice(lo[axis], hi[axis], margin, spacing, domain.lo[axis], domain.hi[axis]);
+    box.start[axis] = lattice.start;
+    box.count[axis] = lattice.count;
   }
   return box;
 }
 
 // The point to measure the shape's distance at: along periodic axes the shape is taken to
-// extend without end, so the point is moved onto the shape's middle there.
+// extend without end, so the point is moved onto the shape's middle there (a shape unbounded
+// along the axis is left as it is: it has no middle, and no end to remove).
 Vec3 probe_point(const Vec3& x, const Shape& shape, const Domain& domain) {
   Vec3 probe = x;
   for (int axis = 0; axis < domain.dimensions; ++axis) {
-    if (domain.periodic[axis]) {
-      probe[axis] = 0.5 * (shape.lower()[axis] + shape.upper()[axis]);
+    const double lo = shape.lower()[axis];
+    const double hi = shape.upper()[axis];
+    if (domain.periodic[axis] && std::isfinite(lo) && std::isfinite(hi)) {
+      probe[axis] = 0.5 * (lo + hi);
     }
   }
   return probe;
@@ -58,16 +99,6 @@ std::vector<Vec3> sample(const LatticeBox& box, double spacing, Keep&& keep) {
   return points;
 }
 
-bool beyond_open_face(const Vec3& x, const Shape& shape, const std::vector<Face>& open_faces) {
-  for (const Face& face : open_faces) {
-    if (face.side > 0 && x[face.axis] > shape.upper()[face.axis])
-      return true;
-    if (face.side < 0 && x[face.axis] < shape.lower()[face.axis])
-      return true;
-  }
-  return false;
-}
-
 }  // namespace
 
 std::vector<Vec3> fill(const Shape& shape, double spacing, const Domain& domain) {
@@ -83,7 +114,7 @@ std::vector<Vec3> wall_layers(const Shape& shape, double spacing, int layers,
   const LatticeBox box = lattice_box(shape, spacing, thickness, domain);
   return sample(box, spacing, [&](const Vec3& x) {
     const double distance = shape.signed_distance(probe_point(x, shape, domain));
-    return distance > 0.0 && distance < thickness && !beyond_open_face(x, shape, open_faces);
+    return distance > 0.0 && distance < thickness && !shape.beyond_open_end(x, open_faces);
   });
 }
 

@@ -2,27 +2,32 @@
 // Lattice samplers: particles on a Cartesian lattice of a given spacing, filling a shape or
 // laying wall layers around it. Lattice points sit at lower + (i + 1/2) spacing, so a filled box
 // keeps half a spacing from its faces and the wall surface lies exactly on the shape's surface.
+//
+// Along each axis the lattice spans the shape's bounding box (plus the wall thickness for
+// wall_layers), cut at the domain's face where the shape has no end: an infinite bound (a plane,
+// a drum), or a huge one (farther beyond the face than the domain's length plus the wall
+// thickness). So such shapes give points inside the domain only along those axes. A shape that
+// pokes out of the domain by less keeps its whole lattice, and the run reports the points
+// outside the domain. Where only one end is cut, the lattice keeps the phase of the other, so
+// that the layers behind a plane sit (j + 1/2) spacings from it; where both are, the lattice is
+// the domain's: domain.lo + (i + 1/2) spacing.
 #include <array>
 #include <vector>
 
 #include "core/vec.hpp"
+#include "geometry/face.hpp"
 #include "geometry/shape.hpp"
 #include "particles/domain.hpp"
 
 namespace partimix::geometry {
 
-// A face of a shape's bounding box: axis 0..2, side -1 (lower) or +1 (upper).
-struct Face {
-  int axis = 0;
-  int side = 1;
-};
-
 // Points strictly inside the shape (signed distance < 0). Along periodic axes of the domain
 // the lattice spans the whole period.
 std::vector<Vec3> fill(const Shape& shape, double spacing, const Domain& domain);
 
-// Points outside the shape within `layers` spacings of its surface, except beyond the open
-// faces and along the periodic axes of the domain (which carry no wall).
+// Points outside the shape within `layers` spacings of its surface, except beyond its open ends
+// (Shape::beyond_open_end: by default the open faces of its bounding box) and along the periodic
+// axes of the domain (which carry no wall).
 std::vector<Vec3> wall_layers(const Shape& shape, double spacing, int layers,
                               const std::vector<Face>& open_faces, const Domain& domain);
 

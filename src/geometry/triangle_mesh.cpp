@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "geometry/mesh_shell_surface.hpp"
 
 namespace partimix::geometry {
 namespace {
@@ -217,14 +218,19 @@ TriangleMesh::TriangleMesh(TriangleSoup triangles, const Vec3& translation) {
   const Eigen::AlignedBox3d bounds = bounds_of(surface.triangles);
   lower_ = bounds.min();
   upper_ = bounds.max();
-  bvh_ = TriangleBvh(surface.triangles);
+  bvh_ = std::make_shared<const TriangleBvh>(surface.triangles);
 }
 
 double TriangleMesh::signed_distance(const Vec3& x) const {
-  const ClosestPoint nearest = bvh_.nearest(x);
+  const ClosestPoint nearest = bvh_->nearest(x);
   const double distance = std::sqrt(nearest.distance_squared);
   const double side = (x - nearest.point).dot(pseudo_normal(normals_[nearest.triangle], nearest));
   return side < 0.0 ? -distance : distance;
+}
+
+std::unique_ptr<Surface> TriangleMesh::make_surface(bool /*solid*/,
+                                                    const std::vector<Face>& /*open_faces*/) const {
+  return std::make_unique<MeshShellSurface>(bvh_, lower_, upper_);
 }
 
 TriangleMesh read_triangle_mesh(const std::string& path, double scale, const Vec3& translation) {

@@ -13,6 +13,7 @@
 // consistently oriented, which the constructor checks.
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -42,11 +43,15 @@ class TriangleMesh final : public Shape {
   double signed_distance(const Vec3& x) const override;
   Vec3 lower() const override { return lower_; }
   Vec3 upper() const override { return upper_; }
-  std::size_t triangle_count() const { return bvh_.size(); }
+  // A two-sided MeshShellSurface over the same triangles, sharing the hierarchy, whatever
+  // `solid` and `open_faces` say (a mesh has no faces to open; DEM contacts it from both sides).
+  std::unique_ptr<Surface> make_surface(bool solid,
+                                        const std::vector<Face>& open_faces) const override;
+  std::size_t triangle_count() const { return bvh_->size(); }
 
  private:
-  TriangleBvh bvh_;
-  std::vector<PseudoNormals> normals_;  // by triangle index in the hierarchy's input
+  std::shared_ptr<const TriangleBvh> bvh_;  // shared with the surfaces made from the mesh
+  std::vector<PseudoNormals> normals_;      // by triangle index in the hierarchy's input
   Vec3 lower_ = Vec3::Zero();
   Vec3 upper_ = Vec3::Zero();
 };

@@ -32,23 +32,18 @@ void read_body(Reader& item, AnalysisSpec& analysis, int dimensions,
       item.optional<double>("average_revolutions", analysis.average_revolutions, kPositive);
 }
 
-void check_flow_scales(Reader& item, const FluidSpec& fluid) {
-  const std::string& model = fluid.rheology.model;
-  if (model != "newtonian" && model != "power_law" && model != "herschel_bulkley") {
-    throw item.error("type",
-                     "power numbers need a newtonian, power_law or herschel_bulkley "
-                     "fluid (Re by eq. 27 needs K and n); the fluid is " +
-                         model);
-  }
-}
-
-void read_power_number(Reader& item, AnalysisSpec& analysis, const std::vector<WallSpec>& walls,
-                       const FluidSpec& fluid) {
+void read_power_number(Reader& item, AnalysisSpec& analysis, const Case& the_case,
+                       const MethodSection& section) {
   analysis.diameter = item.required<double>("diameter", kPositive);
   analysis.metzner_otto = item.optional<double>("metzner_otto", analysis.metzner_otto, kPositive);
-  check_flow_scales(item, fluid);
+  if (!section.flow_scales()) {
+    throw item.error("type", fmt::format("power numbers need a newtonian, power_law or "
+                                         "herschel_bulkley fluid (Re by eq. 27 needs K and n); "
+                                         "method {} has none",
+                                         analysis.method));
+  }
   try {
-    analysis::power_scales(walls[static_cast<std::size_t>(analysis.body)].motion,
+    analysis::power_scales(the_case.walls[static_cast<std::size_t>(analysis.body)].motion,
                            analysis.diameter);
   } catch (const std::invalid_argument& error) {
     throw item.error("body", fmt::format("wall {}: {}", analysis.body, error.what()));
@@ -103,9 +98,13 @@ void read_box_region(Reader& item, analysis::MixingRegion& region, int dimension
   region.cells = read_cells(item, dimensions);
 }
 
-void read_mixing(Reader& item, AnalysisSpec& analysis, int dimensions, const FluidSpec& fluid) {
-  if (!fluid.tracer)
-    throw item.error("type", "a mixing analysis needs fluid.tracer (which fluid is the tracer)");
+void read_mixing(Reader& item, AnalysisSpec& analysis, int dimensions,
+                 const MethodSection& section) {
+  if (!section.has_tracer()) {
+    throw item.error("type", fmt::format("a mixing analysis needs a tracer in the material of "
+                                         "method {} (fluid.tracer for sph, two species for dem)",
+                                         analysis.method));
+  }
   analysis::MixingRegion& region = analysis.mixing;
   if (item.choice("region", "cylinder", {"cylinder", "box"}) == "cylinder")
     read_cylinder_region(item, region, dimensions);
@@ -177,23 +176,32 @@ void read_angle_of_repose(Reader& item, AnalysisSpec& analysis, int dimensions) 
     throw item.error("trim", "trim must be below 0.5 (it is dropped at each end)");
 }
 
+// The method whose particles the analysis measures: `method`, by default the first of the case.
+const MethodSection& read_method(Reader& item, AnalysisSpec& analysis, const Case& the_case) {
+  std::vector<std::string> names;
+  for (const MethodSpec& spec : the_case.methods)
+    names.push_back(spec.name);
+  analysis.method = item.choice("method", names.front(), names);
+  return *the_case.method(analysis.method)->section;
+}
+
 }  // namespace
 
-std::vector<AnalysisSpec> read_analyses(Reader& root, int dimensions,
-                                        const std::vector<WallSpec>& walls,
-                                        const FluidSpec& fluid) {
+std::vector<AnalysisSpec> read_analyses(Reader& root, const Case& the_case) {
+  const int dimensions = the_case.domain.dimensions;
   std::vector<AnalysisSpec> analyses;
   for (Reader& item : root.optional_list("analyses")) {
     AnalysisSpec analysis;
     analysis.type = item.required_choice("type", kTypes);
+    const MethodSection& section = read_method(item, analysis, the_case);
     if (analysis.type == "front_position")
       analysis.axis = axis_index(item.choice("axis", "x", axis_names(dimensions)));
     if (analysis.type == "body_loads" || analysis.type == "power_number")
-      read_body(item, analysis, dimensions, walls);
+      read_body(item, analysis, dimensions, the_case.walls);
     if (analysis.type == "power_number")
-      read_power_number(item, analysis, walls, fluid);
+      read_power_number(item, analysis, the_case, section);
     if (analysis.type == "mixing")
-      read_mixing(item, analysis, dimensions, fluid);
+      read_mixing(item, analysis, dimensions, section);
     if (analysis.type == "packing_fraction")
       read_packing_fraction(item, analysis, dimensions);
     if (analysis.type == "velocity_profile")

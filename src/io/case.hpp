@@ -1,62 +1,71 @@
 #pragma once
 // A case: the typed, validated content of a case file (DESIGN.md, "One run"). Built by
-// load_case(); every key, unit and default is listed in docs/case-reference.md.
+// load_case(); every key, unit and default is listed in docs/case-reference.md. The case knows
+// no concrete method: each method named by `solver` reads its own sections into a
+// MethodSection of its own type (io/method_type.hpp), and the walls, the domain, time and
+// analyses are shared by all of them.
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "analysis/bed_options.hpp"
 #include "analysis/sampling_cells.hpp"
+#include "core/error.hpp"
 #include "core/vec.hpp"
 #include "geometry/lattice.hpp"
 #include "geometry/motion.hpp"
 #include "geometry/shape.hpp"
-#include "io/dem_section.hpp"
+#include "geometry/surface.hpp"
+#include "materials/flow_scales.hpp"
 #include "particles/domain.hpp"
-#include "sph/config.hpp"
-#include "sph/rheology.hpp"
 
 namespace partimix::io {
 
 struct TimeControl {
-  double end = 0.0;              // [s]
-  double output_interval = 0.0;  // frames every ... [s]
-  double sample_interval = 0.0;  // series.csv rows every ... [s]
+  double end = 0.0;                  // [s]
+  double output_interval = 0.0;      // frames every ... [s]
+  double sample_interval = 0.0;      // series.csv rows every ... [s]
+  double checkpoint_interval = 0.0;  // checkpoints every ... [s]; 0: none (but on Ctrl-C)
+  std::optional<double> fixed_dt;    // `dt`: the common step of the methods [s]; else adaptive
 };
 
-struct FluidRegion {
-  std::shared_ptr<const geometry::Shape> shape;
+// What a wall is made of, for the methods that need it (DEM contacts): its elastic constants,
+// and restitution and friction coefficients that, when given, hold for every species against
+// this wall in place of dem.interactions.
+struct WallMaterial {
+  double youngs_modulus = 2.0e11;  // [Pa] (steel)
+  double poisson_ratio = 0.3;
+  std::optional<double> restitution;
+  std::optional<double> friction;
+  std::optional<double> rolling_friction;
 };
 
-// The tracer of the mixing analyses: the fluid on the side of a plane the normal points to, at
-// t = 0, gets tag 1 (the rest tag 0): (x - point) . normal > 0.
-struct TracerPlane {
-  Vec3 point = Vec3::Zero();
-  Vec3 normal = -Vec3::UnitY();  // the seed: the fluid at y < 0
-};
-
-struct FluidSpec {
-  double density = 1000.0;       // rho0 [kg/m^3]
-  sph::RheologyConfig rheology;  // from `viscosity` (newtonian) or the `rheology` map
-  std::vector<FluidRegion> regions;
-  std::optional<TracerPlane> tracer;
-};
-
+// One wall of the shared walls section (docs/case-reference.md, "walls"): a container or a body
+// that every method uses in its own way: SPH lays wall particles from the shape, DEM contacts
+// the surface. Both are in the wall's frame at t = 0; the motion moves them.
 struct WallSpec {
-  std::shared_ptr<const geometry::Shape> shape;
+  std::string kind;                              // the shape's name: box, cylinder, plane, ...
+  std::shared_ptr<const geometry::Shape> shape;  // null for a mesh that is not closed
+  std::shared_ptr<const geometry::Surface> surface;
   std::vector<geometry::Face> open_faces;
   geometry::MotionConfig motion;  // prescribed motion of this wall as a body
   bool solid = false;  // true: layers inside the shape (an impeller), not outside (a container)
+  WallMaterial material;
+  // Why shape is null, as an error at the wall's `file` key, for the methods that need a shape.
+  std::optional<InputError> no_shape;
 };
 
 struct OutputSpec {
   bool frames = true;  // VTK frames every output_interval
 };
 
-// A measurement sampled into series.csv (docs/case-reference.md, "analyses").
+// A measurement sampled into series.csv (docs/case-reference.md, "analyses"), of the particles
+// of one method (`method`, the first of `solver` by default).
 // front_position: the largest coordinate of any fluid particle along `axis` (dam break).
 // body_loads, power_number: the load on wall `body` and its power and Reynolds numbers
 // (docs/power.md). mixing: uniformity and Lacey indices of the tracer (docs/mixing.md).
@@ -64,6 +73,7 @@ struct OutputSpec {
 // (docs/mixing.md, "Measurements of a granular bed").
 struct AnalysisSpec {
   std::string type;
+  std::string method;
   int axis = 0;
   int body = 0;
   Vec3 vessel_axis_point = Vec3::Zero();
@@ -76,25 +86,63 @@ struct AnalysisSpec {
   analysis::ReposeSection repose;  // angle_of_repose
 };
 
+// What a method read from its own sections of the case file. Each method derives its own type;
+// the analyses ask it only what they need to know of any method's material.
+class MethodSection {
+ public:
+  virtual ~MethodSection() = default;
+  // Whether the material carries a tracer (tag 1) for the mixing analyses.
+  virtual bool has_tracer() const = 0;
+  // The fluid's scales for Reynolds numbers, when the material is a fluid that has them.
+  virtual std::optional<materials::FlowScales> flow_scales() const { return std::nullopt; }
+};
+
+// One method of the case: its name in the method registry, its sections, and how many steps it
+// takes per step of the run's clock (time.sub_steps).
+struct MethodSpec {
+  std::string name;
+  std::shared_ptr<MethodSection> section;
+  int sub_steps = 1;
+};
+
 struct Case {
   std::string file;  // path of the case file as given
   std::string name;
   std::string description;
-  std::string solver;  // sph | dem
-  Domain domain;       // with the number of dimensions
+  std::vector<MethodSpec> methods;  // from `solver`, in its order
+  Domain domain;                    // with the number of dimensions
   Vec3 gravity = Vec3::Zero();
   TimeControl time;
-  sph::Config sph;
-  DemSpec dem;      // solver dem: the grains, their contacts and walls
-  FluidSpec fluid;  // solver dem: only the tracer, the split of dem.fill
   std::vector<WallSpec> walls;
   OutputSpec output;
   std::vector<AnalysisSpec> analyses;
   nlohmann::json resolved;  // every key with the value used, defaults and --set included
+
+  // The method named `name`; nullptr when the case does not run it.
+  const MethodSpec* method(const std::string& method_name) const;
+  // The section of method `method_name` as its own type T (throws std::logic_error when the case
+  // does not run that method or its section is of another type).
+  template <class T>
+  const T& section(const std::string& method_name) const;
+  template <class T>
+  T& section(const std::string& method_name) {
+    return const_cast<T&>(std::as_const(*this).section<T>(method_name));
+  }
+  // Whether the case runs exactly one method.
+  bool single_method() const { return methods.size() == 1; }
 };
 
 // Reads and validates a case file, applying `overrides` ("a.b.c=value", as from --set) first.
 // Throws InputError naming file, line, column and key path on any problem.
 Case load_case(const std::string& path, const std::vector<std::string>& overrides = {});
+
+template <class T>
+const T& Case::section(const std::string& method_name) const {
+  const MethodSpec* spec = method(method_name);
+  const T* typed = spec ? dynamic_cast<const T*>(spec->section.get()) : nullptr;
+  if (typed == nullptr)
+    throw std::logic_error("the case has no section of method '" + method_name + "' of that type");
+  return *typed;
+}
 
 }  // namespace partimix::io

@@ -11,10 +11,15 @@
 
 namespace partimix::io {
 
-PvdWriter::PvdWriter(std::filesystem::path file) : file_(std::move(file)) {}
+PvdWriter::PvdWriter(std::filesystem::path file, std::vector<PvdEntry> entries)
+    : file_(std::move(file)), entries_(std::move(entries)) {}
 
 void PvdWriter::add(double time, const std::string& relative_frame_path) {
   entries_.push_back({time, relative_frame_path});
+  write();
+}
+
+void PvdWriter::write() const {
   std::string xml =
       "<?xml version=\"1.0\"?>\n"
       "<VTKFile type=\"Collection\" version=\"1.0\" byte_order=\"LittleEndian\">\n"

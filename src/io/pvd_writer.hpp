@@ -8,22 +8,27 @@
 
 namespace partimix::io {
 
+struct PvdEntry {
+  double time = 0.0;
+  std::string path;  // relative to the .pvd's folder
+};
+
 class PvdWriter {
  public:
-  explicit PvdWriter(std::filesystem::path file);
+  // A collection that lists `entries` already (a resumed run's frames before its checkpoint).
+  explicit PvdWriter(std::filesystem::path file, std::vector<PvdEntry> entries = {});
 
   // Lists the frame at relative_frame_path (relative to the .pvd's folder) at the given time
   // and rewrites the collection. Throws RunError naming the file on an I/O failure.
   void add(double time, const std::string& relative_frame_path);
+  // Rewrites the collection with the entries it has.
+  void write() const;
+
+  const std::vector<PvdEntry>& entries() const { return entries_; }
 
  private:
-  struct Entry {
-    double time = 0.0;
-    std::string path;
-  };
-
   std::filesystem::path file_;
-  std::vector<Entry> entries_;
+  std::vector<PvdEntry> entries_;
 };
 
 }  // namespace partimix::io

@@ -10,7 +10,7 @@
 namespace partimix::io {
 namespace {
 
-using Config = sph::RheologyConfig;
+using Config = materials::RheologyConfig;
 using KeyReader = void (*)(Reader&, Config&);
 
 bool has_yield_stress(const std::string& model) {
@@ -148,7 +148,7 @@ Config read_rheology_map(Reader& fluid) {
 
 }  // namespace
 
-sph::RheologyConfig read_fluid_rheology(Reader& fluid) {
+materials::RheologyConfig read_fluid_rheology(Reader& fluid) {
   const bool viscosity = fluid.contains("viscosity");
   if (fluid.contains("rheology")) {
     if (viscosity) {

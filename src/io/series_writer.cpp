@@ -1,14 +1,20 @@
 #include "io/series_writer.hpp"
 
-#include <fmt/format.h>
-#include <fmt/ranges.h>
+#include <fcntl.h>
+#include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
 #include <set>
 #include <stdexcept>
 #include <string_view>
 #include <utility>
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 
 namespace partimix::io {
 namespace {
@@ -38,19 +44,44 @@ std::string header_line(const std::vector<SeriesColumn>& columns) {
       line += ',';
     line += fmt::format("{} [{}]", column.name, column.unit.empty() ? "-" : column.unit);
   }
-  return line;
+  return line + '\n';
+}
+
+// Writes all of `text`, continuing after a partial write or an interrupted call.
+bool write_all(int descriptor, std::string_view text) {
+  while (!text.empty()) {
+    const ssize_t written = ::write(descriptor, text.data(), text.size());
+    if (written < 0 && errno == EINTR)
+      continue;
+    if (written <= 0)
+      return false;
+    text.remove_prefix(static_cast<std::size_t>(written));
+  }
+  return true;
 }
 
 }  // namespace
 
-SeriesWriter::SeriesWriter(const std::filesystem::path& file, std::vector<SeriesColumn> columns)
+SeriesWriter::SeriesWriter(const std::filesystem::path& file, std::vector<SeriesColumn> columns,
+                           std::span<const double> rows)
     : file_(file), columns_(std::move(columns)) {
   check_columns(columns_);
-  out_.open(file_, std::ios::binary | std::ios::trunc);
-  if (!out_) {
-    throw RunError("cannot open '" + file_.string() + "' for writing");
-  }
-  flush_line(header_line(columns_));
+  if (columns_.empty())
+    throw std::invalid_argument("a series needs at least one column");
+  if (rows.size() % columns_.size() != 0)
+    throw std::invalid_argument("series rows must fill whole rows of the columns");
+  std::string content = header_line(columns_);
+  for (std::size_t first = 0; first < rows.size(); first += columns_.size())
+    content += format_row(rows.subspan(first, columns_.size()));
+  write_atomically(file_, [&content](std::ostream& out) { out << content; });
+  descriptor_ = ::open(file_.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
+  if (descriptor_ < 0)
+    throw RunError("cannot open '" + file_.string() + "' for writing: " + std::strerror(errno));
+}
+
+SeriesWriter::~SeriesWriter() {
+  if (descriptor_ >= 0)
+    ::close(descriptor_);
 }
 
 void SeriesWriter::write_row(std::span<const double> values) {
@@ -58,15 +89,12 @@ void SeriesWriter::write_row(std::span<const double> values) {
     throw std::invalid_argument(fmt::format("series row has {} values for {} columns in '{}'",
                                             values.size(), columns_.size(), file_.string()));
   }
-  flush_line(fmt::format("{:.10g}", fmt::join(values, ",")));
+  if (!write_all(descriptor_, format_row(values)))
+    throw RunError("failed writing '" + file_.string() + "': " + std::strerror(errno));
 }
 
-void SeriesWriter::flush_line(const std::string& line) {
-  out_ << line << '\n';
-  out_.flush();
-  if (!out_) {
-    throw RunError("failed writing '" + file_.string() + "'");
-  }
+std::string SeriesWriter::format_row(std::span<const double> values) const {
+  return fmt::format("{:.10g}\n", fmt::join(values, ","));
 }
 
 }  // namespace partimix::io

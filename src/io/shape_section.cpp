@@ -7,6 +7,9 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "geometry/cone.hpp"
+#include "geometry/drum.hpp"
+#include "geometry/plane.hpp"
 #include "geometry/triangle_mesh.hpp"
 
 namespace partimix::io {
@@ -20,7 +23,7 @@ constexpr double kPlaneHalfThickness = 1.0;
 void require_3d(const Reader& item, const std::string& shape, int dimensions) {
   if (dimensions != 3) {
     throw item.error("shape", fmt::format("{} needs dimensions: 3, this case has {}; "
-                                          "expected one of: box, plate",
+                                          "in 2D: box, plate (and plane for a wall)",
                                           shape, dimensions));
   }
 }
@@ -90,16 +93,63 @@ ShapePtr read_mesh(Reader& item, int dimensions, const std::filesystem::path& ca
   }
 }
 
+// A plane through `point`; the material is on the side its normal points to.
+ShapePtr read_plane(Reader& item, int dimensions) {
+  const Vec3 normal = item.vector("normal", dimensions);
+  if (normal.norm() == 0.0)
+    throw item.error("normal", "the normal must not be the zero vector");
+  return std::make_shared<geometry::Plane>(item.vector("point", dimensions), normal);
+}
+
+Vec3 read_axis(Reader& item) {
+  const Vec3 axis = item.vector("axis", 3);
+  if (axis.norm() == 0.0)
+    throw item.error("axis", "the axis must not be the zero vector");
+  return axis;
+}
+
+// The inside of an endless circular cylinder about `axis` through `axis_point`.
+ShapePtr read_drum(Reader& item, int dimensions) {
+  require_3d(item, "drum", dimensions);
+  const Vec3 point = item.vector("axis_point", 3);
+  const Vec3 axis = read_axis(item);
+  return std::make_shared<geometry::Drum>(point, axis, item.required<double>("radius", kPositive));
+}
+
+// The inside of a cone frustum: radius_0 at axis_point, radius_1 `height` along the axis.
+ShapePtr read_cone(Reader& item, int dimensions) {
+  require_3d(item, "cone", dimensions);
+  const Vec3 point = item.vector("axis_point", 3);
+  const Vec3 axis = read_axis(item);
+  const double radius_0 = item.required<double>("radius_0", kNonNegative);
+  const double radius_1 = item.required<double>("radius_1", kNonNegative);
+  const double height = item.required<double>("height", kPositive);
+  if (radius_0 == 0.0 && radius_1 == 0.0)
+    throw item.error("radius_1", "a cone needs radius_0 or radius_1 above 0");
+  return std::make_shared<geometry::Cone>(point, axis, radius_0, radius_1, height);
+}
+
 }  // namespace
 
 ShapePtr read_shape(Reader& item, int dimensions, const std::filesystem::path& case_folder) {
   const std::string shape = item.required_choice("shape", {"box", "cylinder", "plate", "mesh"});
+  return read_shape_of(shape, item, dimensions, case_folder);
+}
+
+ShapePtr read_shape_of(const std::string& shape, Reader& item, int dimensions,
+                       const std::filesystem::path& case_folder) {
   if (shape == "cylinder")
     return read_cylinder(item, dimensions);
   if (shape == "plate")
     return read_plate(item, dimensions);
   if (shape == "mesh")
     return read_mesh(item, dimensions, case_folder);
+  if (shape == "plane")
+    return read_plane(item, dimensions);
+  if (shape == "drum")
+    return read_drum(item, dimensions);
+  if (shape == "cone")
+    return read_cone(item, dimensions);
   return read_box(item, dimensions);
 }
 

@@ -1,8 +1,10 @@
 #pragma once
-// The shapes of a case file (docs/case-reference.md, "Shapes"): the items of `fluid.regions` and
-// `walls`, chosen by `shape` (box, cylinder, plate, mesh), each read with its own keys.
+// The shapes of a case file (docs/case-reference.md, "Shapes"): the items of the regions
+// (`fluid.regions`, `dem.fill.region`: box, cylinder, plate, mesh) and of `walls` (those and
+// plane, drum, cone), chosen by `shape`, each read with its own keys.
 #include <filesystem>
 #include <memory>
+#include <string>
 
 #include "core/vec.hpp"
 #include "geometry/shape.hpp"
@@ -15,6 +17,12 @@ namespace partimix::io {
 // about the item's `file` key that quotes the mesh's own error.
 std::shared_ptr<const geometry::Shape> read_shape(Reader& item, int dimensions,
                                                   const std::filesystem::path& case_folder);
+
+// The shape named `shape` (box, cylinder, plate, mesh, or the wall shapes plane, drum, cone)
+// from the keys of `item`, whose `shape` key the caller has read.
+std::shared_ptr<const geometry::Shape> read_shape_of(const std::string& shape, Reader& item,
+                                                     int dimensions,
+                                                     const std::filesystem::path& case_folder);
 
 // Checks that `hi` exceeds `lo` on each of the first `dimensions` axes (a box, the domain); the
 // error is about the key `max`.

@@ -197,6 +197,28 @@ std::vector<std::string> Reader::choices(const std::string& key,
   return values;
 }
 
+std::vector<std::string> Reader::required_choices(const std::string& key,
+                                                  const std::vector<std::string>& allowed) {
+  const YAML::Node node = find_required(key);
+  if (!node.IsSequence()) {
+    const std::string value = pick(node, path_of(key), allowed);
+    record(key, value);
+    return {value};
+  }
+  if (node.size() == 0)
+    throw error_at(node, path_of(key), "expected at least one name from: " + one_of(allowed));
+  std::vector<std::string> values;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const std::string path = item_path(path_of(key), i);
+    const std::string value = pick(node[i], path, allowed);
+    if (std::find(values.begin(), values.end(), value) != values.end())
+      throw error_at(node[i], path, fmt::format("'{}' appears twice", value));
+    values.push_back(value);
+  }
+  record(key, values);
+  return values;
+}
+
 Vec3 Reader::vector(const std::string& key, int dimensions) {
   const Vec3 value = components(find_required(key), path_of(key), dimensions);
   record(key, to_json(value, dimensions));

@@ -64,6 +64,10 @@ class Reader {
   // A list of strings, each one of `allowed`; default empty.
   std::vector<std::string> choices(const std::string& key, const std::vector<std::string>& allowed);
 
+  // One name or a list of distinct names, each one of `allowed`; required.
+  std::vector<std::string> required_choices(const std::string& key,
+                                            const std::vector<std::string>& allowed);
+
   // A list of exactly `dimensions` numbers; the components beyond are 0.
   Vec3 vector(const std::string& key, int dimensions);
   Vec3 vector(const std::string& key, int dimensions, const Vec3& fallback);

@@ -1,4 +1,4 @@
-#include "sph/rheology.hpp"
+#include "materials/rheology.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -6,15 +6,15 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "sph/rheology/bingham.hpp"
-#include "sph/rheology/carreau.hpp"
-#include "sph/rheology/cross.hpp"
-#include "sph/rheology/herschel_bulkley.hpp"
-#include "sph/rheology/newtonian.hpp"
-#include "sph/rheology/power_law.hpp"
-#include "sph/rheology/yield_regularisation.hpp"
+#include "materials/rheology/bingham.hpp"
+#include "materials/rheology/carreau.hpp"
+#include "materials/rheology/cross.hpp"
+#include "materials/rheology/herschel_bulkley.hpp"
+#include "materials/rheology/newtonian.hpp"
+#include "materials/rheology/power_law.hpp"
+#include "materials/rheology/yield_regularisation.hpp"
 
-namespace partimix::sph {
+namespace partimix::materials {
 namespace {
 
 YieldRegularisation yield_of(const RheologyConfig& c) {
@@ -74,4 +74,4 @@ double BoundedRheology::viscosity(double shear_rate) const {
   return std::clamp(model_->apparent_viscosity(shear_rate), min_, max_);
 }
 
-}  // namespace partimix::sph
+}  // namespace partimix::materials

@@ -3,14 +3,15 @@
 // (docs/rheology.md; the seed's eqs. 4-6). Models are chosen by name (`fluid.rheology.model`):
 // newtonian, power_law, herschel_bulkley, bingham, cross, carreau. Yield-stress models are
 // regularised (Papanastasiou exponential or a bi-viscous cap), and every model is bounded by
-// [viscosity_min, viscosity_max] so that the viscous time-step limit stays finite.
+// [viscosity_min, viscosity_max] so that the viscous time-step limit stays finite. Shared by the
+// methods (DESIGN.md, "Layers": src/materials): SPH today, grid fluids and MPM next.
 #include <limits>
 #include <memory>
 #include <string>
 
 #include "core/registry.hpp"
 
-namespace partimix::sph {
+namespace partimix::materials {
 
 struct RheologyConfig {
   std::string model = "newtonian";
@@ -52,4 +53,4 @@ class BoundedRheology {
   double max_;
 };
 
-}  // namespace partimix::sph
+}  // namespace partimix::materials

@@ -79,6 +79,12 @@ class ParticleStore {
   const std::deque<Field<Vec3>>& vector_fields() const { return vectors_; }
   const std::deque<Field<std::int32_t>>& integer_fields() const { return integers_; }
   const std::deque<Field<std::int64_t>>& id_fields() const { return id_fields_; }
+  // The same, writable: to set the values of every field at once (restoring a checkpoint); the
+  // fields themselves are added only through add_scalar and its kin.
+  std::deque<Field<double>>& scalar_fields() { return scalars_; }
+  std::deque<Field<Vec3>>& vector_fields() { return vectors_; }
+  std::deque<Field<std::int32_t>>& integer_fields() { return integers_; }
+  std::deque<Field<std::int64_t>>& id_fields() { return id_fields_; }
 
   // Reorders every field so that new particle k is old particle new_to_old[k]. Uses scratch
   // buffers kept between calls, so it does not allocate once they have grown to size.

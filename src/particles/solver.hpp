@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 
+#include "core/state_archive.hpp"
 #include "particles/domain.hpp"
 #include "particles/particle_store.hpp"
 
@@ -27,6 +28,13 @@ class Solver {
   // state. Analyses of body loads call it before sampling; a solver without bodies leaves the
   // fields absent.
   virtual void update_body_forces() {}
+  // The method's full state for a checkpoint, under `prefix` ("methods/sph/"): its particles'
+  // fields (particles/store_state.hpp) and whatever else its next step reads (contact
+  // histories, its time and step count, the inputs of its time step). After restore() the
+  // method continues bit for bit as if it had never stopped. restore() throws StateError when
+  // the archive does not fit the method as built (another particle count or set of fields).
+  virtual void save(StateArchive& archive, const std::string& prefix) const = 0;
+  virtual void restore(const StateArchive& archive, const std::string& prefix) = 0;
 };
 
 }  // namespace partimix

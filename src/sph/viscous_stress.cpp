@@ -10,8 +10,8 @@ namespace {
 
 // Fluid particles: shear rate, apparent viscosity and eta_a G^T. Returns the largest viscosity.
 double fluid_stresses(Fields& f, std::size_t fluid_count, const CellGrid& grid,
-                      const KernelTable& kernel, const BoundedRheology& rheology, int dimensions,
-                      bool corrected) {
+                      const KernelTable& kernel, const materials::BoundedRheology& rheology,
+                      int dimensions, bool corrected) {
   const auto n = static_cast<std::ptrdiff_t>(fluid_count);
   double largest = 0.0;
 #pragma omp parallel for schedule(dynamic, 512) reduction(max : largest)
@@ -51,7 +51,8 @@ void wall_stresses(Fields& f, std::size_t fluid_count, const CellGrid& grid,
 
 double compute_viscous_stress(Fields& f, std::size_t fluid_count, const CellGrid& grid,
                               const KernelTable& gradient_kernel, const KernelTable& kernel,
-                              const BoundedRheology& rheology, int dimensions, bool corrected) {
+                              const materials::BoundedRheology& rheology, int dimensions,
+                              bool corrected) {
   const double largest =
       fluid_stresses(f, fluid_count, grid, gradient_kernel, rheology, dimensions, corrected);
   wall_stresses(f, fluid_count, grid, kernel);

@@ -7,10 +7,10 @@
 // their fluid neighbours' T.
 #include <cstddef>
 
+#include "materials/rheology.hpp"
 #include "particles/cell_grid.hpp"
 #include "sph/fields.hpp"
 #include "sph/kernel_table.hpp"
-#include "sph/rheology.hpp"
 
 namespace partimix::sph {
 
@@ -19,6 +19,7 @@ namespace partimix::sph {
 // means. Returns the largest apparent viscosity of the fluid.
 double compute_viscous_stress(Fields& fields, std::size_t fluid_count, const CellGrid& grid,
                               const KernelTable& gradient_kernel, const KernelTable& kernel,
-                              const BoundedRheology& rheology, int dimensions, bool corrected);
+                              const materials::BoundedRheology& rheology, int dimensions,
+                              bool corrected);
 
 }  // namespace partimix::sph

@@ -7,6 +7,7 @@
 #include <spdlog/spdlog.h>
 
 #include "core/error.hpp"
+#include "particles/store_state.hpp"
 #include "sph/fluid_rates.hpp"
 #include "sph/shear_rate.hpp"
 #include "sph/shepard_filter.hpp"
@@ -306,6 +307,32 @@ void WcsphSolver::warn_once_if_too_fast() {
 }  // namespace partimix::sph
 
 namespace partimix::sph {
+
+// The store holds every per-particle array the next step reads; the viscous stresses are not
+// saved: every interaction recomputes them before use, and analyses sample after a step.
+void WcsphSolver::save(StateArchive& archive, const std::string& prefix) const {
+  save_store(store_, archive, prefix);
+  archive.put_scalar(prefix + "time", time_);
+  archive.put_integers(prefix + "steps",
+                       std::vector<std::int64_t>{static_cast<std::int64_t>(steps_)});
+  archive.put_doubles(prefix + "time_step_inputs",
+                      std::vector<double>{max_acceleration_, max_speed_, max_viscosity_});
+  archive.put_integers(prefix + "warned_about_speed",
+                       std::vector<std::int64_t>{warned_about_speed_ ? 1 : 0});
+}
+
+void WcsphSolver::restore(const StateArchive& archive, const std::string& prefix) {
+  restore_store(store_, archive, prefix);
+  time_ = archive.scalar(prefix + "time");
+  steps_ = static_cast<std::size_t>(archive.integers(prefix + "steps").front());
+  const auto inputs = archive.doubles(prefix + "time_step_inputs");
+  if (inputs.size() != 3)
+    throw StateError(prefix + "time_step_inputs: expected 3 values");
+  max_acceleration_ = inputs[0];
+  max_speed_ = inputs[1];
+  max_viscosity_ = inputs[2];
+  warned_about_speed_ = archive.integers(prefix + "warned_about_speed").front() != 0;
+}
 
 std::map<std::string, double> WcsphSolver::derived_parameters() const {
   const std::size_t fluid = fluid_count_;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "geometry/moving_bodies.hpp"
+#include "materials/rheology.hpp"
 #include "particles/cell_grid.hpp"
 #include "particles/solver.hpp"
 #include "sph/config.hpp"
@@ -15,13 +16,12 @@
 #include "sph/kernel.hpp"
 #include "sph/kernel_table.hpp"
 #include "sph/parameters.hpp"
-#include "sph/rheology.hpp"
 
 namespace partimix::sph {
 
 struct FluidProperties {
-  double density = 1000.0;  // rho0 [kg/m^3]
-  RheologyConfig rheology;  // apparent viscosity model
+  double density = 1000.0;             // rho0 [kg/m^3]
+  materials::RheologyConfig rheology;  // apparent viscosity model
 };
 
 class WcsphSolver final : public Solver {
@@ -42,6 +42,8 @@ class WcsphSolver final : public Solver {
   void step(double dt) override;
   std::map<std::string, double> derived_parameters() const override;
   void update_body_forces() override;
+  void save(StateArchive& archive, const std::string& prefix) const override;
+  void restore(const StateArchive& archive, const std::string& prefix) override;
 
   const Parameters& parameters() const { return parameters_; }
 
@@ -73,7 +75,7 @@ class WcsphSolver final : public Solver {
   double time_ = 0.0;
   geometry::MovingBodies* bodies_;
   bool warned_about_speed_ = false;
-  BoundedRheology rheology_;
+  materials::BoundedRheology rheology_;
   bool newtonian_ = true;
   double max_viscosity_ = 0.0;   // largest apparent viscosity of the fluid now [Pa s]
   std::size_t fluid_count_ = 0;  // fluid particles are [0, fluid_count_) of the store

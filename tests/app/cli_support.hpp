@@ -1,7 +1,7 @@
 #pragma once
 // Helpers for the end-to-end tests of the partimix program (PARTIMIX_BINARY): a scratch folder
 // per test, the program run in a child process with its stdout, stderr and exit code captured,
-// and readers for what a run writes (series.csv, particles.pvd, run.json).
+// and readers for what a run writes (series.csv, <method>.pvd, run.json).
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>

@@ -48,7 +48,7 @@ TEST(Interrupt, SigintEndsTheRunWithTheCurrentFrame) {
   const fs::path out = scratch.work() / "out";
   Child child(scratch, {"run", "case.yaml", "--out", "out", "-q", "-t", "1"});
   // run.json is first written after the handler is installed; the second frame means steps ran.
-  ASSERT_TRUE(wait_for_file(out / "frames" / "particles_000001.vtp"));
+  ASSERT_TRUE(wait_for_file(out / "frames" / "sph_000001.vtp"));
   ASSERT_TRUE(fs::exists(out / "run.json"));
   child.signal(SIGINT);
   const Outcome outcome = child.wait();
@@ -60,7 +60,7 @@ TEST(Interrupt, SigintEndsTheRunWithTheCurrentFrame) {
   const double stopped_at = run.at("simulated_time");
   EXPECT_GT(stopped_at, 0.0);
   EXPECT_LT(stopped_at, 1000.0);
-  const std::vector<FrameEntry> frames = read_pvd(out / "particles.pvd");
+  const std::vector<FrameEntry> frames = read_pvd(out / "sph.pvd");
   ASSERT_GE(frames.size(), 2u);
   EXPECT_EQ(frames.back().time, stopped_at);
   EXPECT_TRUE(fs::exists(out / frames.back().file));

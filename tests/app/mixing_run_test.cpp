@@ -190,7 +190,7 @@ std::vector<std::int32_t> int32_array(const std::string& frame, const std::strin
 TEST_F(MixingRun, FramesTagHalfTheFluidAsTracer) {
   // Tags stay with the particles: 180 tracers (tag 1) and 180 others among the fluid in the
   // first and the last frame; wall particles carry tag 0.
-  const std::vector<FrameEntry> frames = read_pvd(out() / "particles.pvd");
+  const std::vector<FrameEntry> frames = read_pvd(out() / "sph.pvd");
   ASSERT_GE(frames.size(), 2u);
   for (const FrameEntry& entry : {frames.front(), frames.back()}) {
     const std::string frame = read_file(out() / entry.file);

@@ -58,7 +58,7 @@ TEST_F(RunCommand, SeriesHasNamedColumnsWithUnitsUpToTheEndTime) {
 }
 
 TEST_F(RunCommand, CollectionListsOneFramePerOutputTimeAndOneAtTheEnd) {
-  const std::vector<FrameEntry> frames = read_pvd(out() / "particles.pvd");
+  const std::vector<FrameEntry> frames = read_pvd(out() / "sph.pvd");
   ASSERT_EQ(frames.size(), expected_frames(kDamBreakEnd, kDamBreakOutputInterval));
   EXPECT_EQ(frames.front().time, 0.0);
   EXPECT_NEAR(frames.back().time, kDamBreakEnd, 1e-9);
@@ -71,7 +71,7 @@ TEST_F(RunCommand, CollectionListsOneFramePerOutputTimeAndOneAtTheEnd) {
 TEST_F(RunCommand, FramesHoldEveryParticleAndTheOutputFields) {
   const nlohmann::json run = read_json(out() / "run.json").at("run");
   const std::string points = "NumberOfPoints=\"" + run.at("particles").dump() + "\"";
-  for (const auto& frame : read_pvd(out() / "particles.pvd")) {
+  for (const auto& frame : read_pvd(out() / "sph.pvd")) {
     const std::string text = read_file(out() / frame.file);
     EXPECT_THAT(text, StartsWith("<?xml")) << frame.file;
     EXPECT_THAT(text, HasSubstr(points)) << frame.file;

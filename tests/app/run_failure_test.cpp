@@ -82,7 +82,7 @@ void expect_failed_run(const Scratch& scratch, const Outcome& outcome, const std
   const std::string message = run.at("message");
   EXPECT_THAT(message, HasSubstr(what));
   EXPECT_THAT(outcome.err, HasSubstr(message));
-  const std::vector<FrameEntry> frames = read_pvd(out / "particles.pvd");
+  const std::vector<FrameEntry> frames = read_pvd(out / "sph.pvd");
   EXPECT_GE(frames.size(), kept_frames);
   EXPECT_THAT(frame_files(out), ElementsAreArray(files_of(frames)));
   for (const auto& frame : frames) {

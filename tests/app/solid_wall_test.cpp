@@ -85,7 +85,7 @@ Simulation build(const test_support::TempDir& folder, const std::string& text) {
 }
 
 std::vector<std::int32_t> bodies_of(const Simulation& simulation) {
-  return simulation.store->find_integer("body")->values;
+  return simulation.methods[0].store->find_integer("body")->values;
 }
 
 // The positions of the fluid (or wall) particles, sorted.
@@ -104,7 +104,7 @@ std::vector<std::array<double, 3>> positions(const ParticleStore& store, bool fl
 TEST(SolidWall, FluidClearsThePlateByHalfASpacing) {
   const test_support::TempDir folder;
   const Simulation simulation = build(folder, tank_with_plate(0.06));
-  const ParticleStore& store = *simulation.store;
+  const ParticleStore& store = *simulation.methods[0].store;
   std::size_t fluid = 0;
   for (std::size_t i = 0; i < store.size(); ++i) {
     if (store.is_fluid(i)) {
@@ -120,9 +120,9 @@ TEST(SolidWall, FluidClearsThePlateByHalfASpacing) {
 TEST(SolidWall, PlateParticlesAreOneBody) {
   const test_support::TempDir folder;
   const Simulation simulation = build(folder, tank_with_plate(0.06));
-  ASSERT_EQ(simulation.bodies->count(), 2u);
+  ASSERT_EQ(simulation.methods[0].bodies->count(), 2u);
   const std::vector<std::int32_t> body = bodies_of(simulation);
-  const ParticleStore& store = *simulation.store;
+  const ParticleStore& store = *simulation.methods[0].store;
   std::size_t in_plate = 0;
   for (std::size_t i = 0; i < store.size(); ++i) {
     const bool inside = kPlate.signed_distance(store.position()[i]) <= 0.0;
@@ -169,13 +169,13 @@ TEST(SolidWall, MeshCubeGivesTheParticlesOfTheEqualBox) {
   const Simulation from_box = build(
       folder, cube_case("{shape: box, min: [0.065, 0.065, 0.065], max: [0.145, 0.145, 0.145], "
                         "solid: true}"));
-  const auto walls = positions(*from_mesh.store, false);
+  const auto walls = positions(*from_mesh.methods[0].store, false);
   EXPECT_EQ(walls.size(), 4u * 4u * 4u);
-  EXPECT_EQ(walls, positions(*from_box.store, false));
+  EXPECT_EQ(walls, positions(*from_box.methods[0].store, false));
   // The fluid lattice points at 0.01 + 0.02 i in [0.07, 0.15] on every axis are cleared.
-  const auto fluid = positions(*from_mesh.store, true);
+  const auto fluid = positions(*from_mesh.methods[0].store, true);
   EXPECT_EQ(fluid.size(), 10u * 10u * 10u - 5u * 5u * 5u);
-  EXPECT_EQ(fluid, positions(*from_box.store, true));
+  EXPECT_EQ(fluid, positions(*from_box.methods[0].store, true));
 }
 
 }  // namespace

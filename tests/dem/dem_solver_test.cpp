@@ -23,8 +23,8 @@
 #include <random>
 
 #include "dem/dem_solver.hpp"
-#include "dem/drum_wall.hpp"
-#include "dem/plane_wall.hpp"
+#include "geometry/drum_surface.hpp"
+#include "geometry/plane_surface.hpp"
 
 namespace partimix::dem {
 namespace {
@@ -41,7 +41,8 @@ Config one_species(double restitution, double friction) {
 }
 
 void add_plane(Config& config, const Vec3& point, const Vec3& normal) {
-  config.walls.push_back({std::make_shared<PlaneWall>(point, normal), {}, {2.0e11, 0.3}});
+  config.walls.push_back(
+      {std::make_shared<geometry::PlaneSurface>(point, normal), {}, {2.0e11, 0.3}, {}});
 }
 
 Domain box(double half) {
@@ -135,7 +136,10 @@ TEST(DemSolver, GrainCoRotatingWithTheDrumStaysWithIt) {
   motion.rpm = 30.0;
   const double drum_radius = 0.1;
   config.walls.push_back(
-      {std::make_shared<DrumWall>(Vec3::Zero(), Vec3::UnitZ(), drum_radius), motion, {1.0e7, 0.3}});
+      {std::make_shared<geometry::DrumSurface>(Vec3::Zero(), Vec3::UnitZ(), drum_radius),
+       motion,
+       {1.0e7, 0.3},
+       {}});
   Domain domain = box(0.11);
   domain.periodic = {false, false, true};
   ParticleStore store;

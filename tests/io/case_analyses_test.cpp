@@ -8,6 +8,7 @@
 #include <string>
 
 #include "case_files.hpp"
+#include "support/sph_case.hpp"
 
 namespace partimix::case_test {
 namespace {
@@ -134,10 +135,10 @@ TEST(CaseAnalyses, PowerNumberTakesPowerLawAndHerschelBulkleyFluids) {
 
 TEST(CaseAnalyses, TracerLoadsWithTheSeedsNormalByDefault) {
   const io::Case loaded = load_text(with_analyses("", kTracer));
-  ASSERT_TRUE(loaded.fluid.tracer.has_value());
-  EXPECT_EQ(loaded.fluid.tracer->point, Vec3(0.0, 0.5, 0.0));
-  EXPECT_EQ(loaded.fluid.tracer->normal, Vec3(0.0, -1.0, 0.0));
-  EXPECT_FALSE(load_text(kMinimal2D).fluid.tracer.has_value());
+  ASSERT_TRUE(test_support::fluid_of(loaded).tracer.has_value());
+  EXPECT_EQ(test_support::fluid_of(loaded).tracer->point, Vec3(0.0, 0.5, 0.0));
+  EXPECT_EQ(test_support::fluid_of(loaded).tracer->normal, Vec3(0.0, -1.0, 0.0));
+  EXPECT_FALSE(test_support::fluid_of(load_text(kMinimal2D)).tracer.has_value());
 }
 
 TEST(CaseAnalyses, MixingDiscDefaults) {
@@ -190,7 +191,7 @@ TEST(CaseAnalyses, MixingCylinderIn3D) {
   const io::Case loaded = load_text(with_analyses_3d(
       "  - {type: mixing, axis_point: [0.5, 0.5, 0], axis: [0, 0, 2], radius: 0.3, bottom: 0.1, "
       "top: 0.45, cells: [2, 4, 3]}\n"));
-  EXPECT_EQ(loaded.fluid.tracer->normal, Vec3(0.0, -1.0, 0.0));
+  EXPECT_EQ(test_support::fluid_of(loaded).tracer->normal, Vec3(0.0, -1.0, 0.0));
   const analysis::CylinderRegion& cylinder = only_analysis(loaded).mixing.cylinder_region;
   EXPECT_EQ(cylinder.axis_point, Vec3(0.5, 0.5, 0.0));
   EXPECT_EQ(cylinder.axis.normalized(), Vec3::UnitZ());
@@ -227,7 +228,7 @@ TEST(CaseAnalyses, PowerNumberRefusesCrossAndCarreauFluids) {
     expect_location(error, "case.yaml", line, 11, "analyses[0].type");
     EXPECT_THAT(error.message(),
                 HasSubstr("need a newtonian, power_law or herschel_bulkley fluid"));
-    EXPECT_THAT(error.message(), HasSubstr("the fluid is " + model));
+    EXPECT_THAT(error.message(), HasSubstr("method sph has none")) << model;
   }
 }
 
@@ -270,7 +271,7 @@ TEST(CaseAnalyses, MixingNeedsATracer) {
   const InputError error =
       load_error(with_analyses("  - type: mixing\n    radius: 0.2\n    cells: [2, 4]\n"));
   expect_location(error, "case.yaml", line, 11, "analyses[0].type");
-  EXPECT_THAT(error.message(), HasSubstr("needs fluid.tracer"));
+  EXPECT_THAT(error.message(), HasSubstr("fluid.tracer for sph"));
 }
 
 TEST(CaseAnalyses, CellCountsMustBeWholeNumbersOfAtLeastOne) {

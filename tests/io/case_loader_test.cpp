@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "case_files.hpp"
+#include "support/sph_case.hpp"
 
 namespace partimix::case_test {
 namespace {
@@ -98,7 +99,8 @@ TEST(CaseLoader, Full2DCaseHasTheValuesWritten) {
   const Case loaded = load_text(kFull2D);
   EXPECT_EQ(loaded.name, "dam_break_2d");
   EXPECT_EQ(loaded.description, "A column of water collapses.");
-  EXPECT_EQ(loaded.solver, "sph");
+  ASSERT_EQ(loaded.methods.size(), 1u);
+  EXPECT_EQ(loaded.methods[0].name, "sph");
   EXPECT_EQ(loaded.domain.dimensions, 2);
   EXPECT_EQ(loaded.gravity, Vec3(0.0, -9.81, 0.0));
   EXPECT_EQ(loaded.domain.lo, Vec3(-0.1, -0.1, 0.0));
@@ -108,8 +110,8 @@ TEST(CaseLoader, Full2DCaseHasTheValuesWritten) {
   EXPECT_DOUBLE_EQ(loaded.time.end, 1.5);
   EXPECT_DOUBLE_EQ(loaded.time.output_interval, 0.02);
   EXPECT_DOUBLE_EQ(loaded.time.sample_interval, 0.005);
-  EXPECT_DOUBLE_EQ(loaded.fluid.density, 998.2);
-  EXPECT_DOUBLE_EQ(loaded.fluid.rheology.viscosity, 1.0e-3);
+  EXPECT_DOUBLE_EQ(test_support::fluid_of(loaded).density, 998.2);
+  EXPECT_DOUBLE_EQ(test_support::fluid_of(loaded).rheology.viscosity, 1.0e-3);
   EXPECT_FALSE(loaded.output.frames);
   ASSERT_EQ(loaded.analyses.size(), 1u);
   EXPECT_EQ(loaded.analyses[0].type, "front_position");
@@ -117,7 +119,7 @@ TEST(CaseLoader, Full2DCaseHasTheValuesWritten) {
 }
 
 TEST(CaseLoader, Full2DCaseHasTheSphSettingsWritten) {
-  const sph::Config sph = load_text(kFull2D).sph;
+  const sph::Config sph = test_support::sph_config(load_text(kFull2D));
   EXPECT_DOUBLE_EQ(sph.spacing, 0.01);
   EXPECT_DOUBLE_EQ(sph.smoothing_ratio, 1.2);
   EXPECT_EQ(sph.kernel, "cubic_spline");
@@ -144,10 +146,11 @@ TEST(CaseLoader, Full2DCaseHasTheSphSettingsWritten) {
 
 TEST(CaseLoader, TwoDimensionalBoxesSpanZFromMinusOneToOne) {
   const Case loaded = load_text(kFull2D);
-  ASSERT_EQ(loaded.fluid.regions.size(), 1u);
-  EXPECT_EQ(loaded.fluid.regions[0].shape->lower(), Vec3(0.0, 0.0, -1.0));
-  EXPECT_EQ(loaded.fluid.regions[0].shape->upper(), Vec3(0.5, 1.0, 1.0));
-  EXPECT_LT(loaded.fluid.regions[0].shape->signed_distance(Vec3(0.25, 0.5, 0.0)), 0.0);
+  ASSERT_EQ(test_support::fluid_of(loaded).regions.size(), 1u);
+  EXPECT_EQ(test_support::fluid_of(loaded).regions[0].shape->lower(), Vec3(0.0, 0.0, -1.0));
+  EXPECT_EQ(test_support::fluid_of(loaded).regions[0].shape->upper(), Vec3(0.5, 1.0, 1.0));
+  EXPECT_LT(test_support::fluid_of(loaded).regions[0].shape->signed_distance(Vec3(0.25, 0.5, 0.0)),
+            0.0);
 }
 
 TEST(CaseLoader, WallOpenFacesBecomeFaces) {
@@ -169,26 +172,26 @@ TEST(CaseLoader, MinimalCaseTakesTheDefaults) {
   EXPECT_TRUE(loaded.output.frames);
   EXPECT_TRUE(loaded.analyses.empty());
   const sph::Config defaults;
-  EXPECT_DOUBLE_EQ(loaded.sph.smoothing_ratio, defaults.smoothing_ratio);
-  EXPECT_EQ(loaded.sph.kernel, defaults.kernel);
-  EXPECT_EQ(loaded.sph.gradient_kernel, "");
-  EXPECT_EQ(loaded.sph.equation_of_state, "tait");
-  EXPECT_FALSE(loaded.sph.sound_speed.has_value());
-  EXPECT_FALSE(loaded.sph.max_velocity.has_value());
-  EXPECT_FALSE(loaded.sph.wall_layers.has_value());
-  EXPECT_FALSE(loaded.sph.negative_wall_pressure);
-  EXPECT_EQ(loaded.sph.density.diffusion, "fourtakas");
-  EXPECT_EQ(loaded.sph.sort_interval, 20);
-  EXPECT_EQ(loaded.sph.viscous_operator, "auto");
-  EXPECT_EQ(loaded.sph.viscosity_mean, "arithmetic");
+  EXPECT_DOUBLE_EQ(test_support::sph_config(loaded).smoothing_ratio, defaults.smoothing_ratio);
+  EXPECT_EQ(test_support::sph_config(loaded).kernel, defaults.kernel);
+  EXPECT_EQ(test_support::sph_config(loaded).gradient_kernel, "");
+  EXPECT_EQ(test_support::sph_config(loaded).equation_of_state, "tait");
+  EXPECT_FALSE(test_support::sph_config(loaded).sound_speed.has_value());
+  EXPECT_FALSE(test_support::sph_config(loaded).max_velocity.has_value());
+  EXPECT_FALSE(test_support::sph_config(loaded).wall_layers.has_value());
+  EXPECT_FALSE(test_support::sph_config(loaded).negative_wall_pressure);
+  EXPECT_EQ(test_support::sph_config(loaded).density.diffusion, "fourtakas");
+  EXPECT_EQ(test_support::sph_config(loaded).sort_interval, 20);
+  EXPECT_EQ(test_support::sph_config(loaded).viscous_operator, "auto");
+  EXPECT_EQ(test_support::sph_config(loaded).viscosity_mean, "arithmetic");
 }
 
 TEST(CaseLoader, ThreeDimensionalCylinderCase) {
   const Case loaded = load_text(kCylinder3D);
   EXPECT_EQ(loaded.domain.dimensions, 3);
   EXPECT_EQ(loaded.gravity, Vec3(0.0, 0.0, -9.81));
-  ASSERT_EQ(loaded.fluid.regions.size(), 1u);
-  const geometry::Shape& region = *loaded.fluid.regions[0].shape;
+  ASSERT_EQ(test_support::fluid_of(loaded).regions.size(), 1u);
+  const geometry::Shape& region = *test_support::fluid_of(loaded).regions[0].shape;
   EXPECT_EQ(region.lower(), Vec3(-0.15, -0.15, 0.0));
   EXPECT_EQ(region.upper(), Vec3(0.15, 0.15, 0.3));
   ASSERT_EQ(loaded.walls.size(), 1u);

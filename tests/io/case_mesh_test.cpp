@@ -8,6 +8,7 @@
 
 #include "case_files.hpp"
 #include "support/box_mesh.hpp"
+#include "support/sph_case.hpp"
 #include "support/stl_files.hpp"
 
 namespace partimix::case_test {
@@ -84,7 +85,8 @@ TEST(CaseMesh, FluidRegionCanBeAMesh) {
   const CaseFile file(case_3d("    - shape: mesh\n      file: cube.stl\n      scale: 0.001\n"));
   file.add_file("cube.stl", cube_mm());
   const io::Case loaded = io::load_case(file.path());
-  EXPECT_TRUE(loaded.fluid.regions.at(0).shape->upper().isApprox(Vec3::Constant(0.1), 1e-12));
+  EXPECT_TRUE(test_support::fluid_of(loaded).regions.at(0).shape->upper().isApprox(
+      Vec3::Constant(0.1), 1e-12));
 }
 
 TEST(CaseMesh, MissingFileNamesTheCaseFileLineAndKey) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "case_files.hpp"
+#include "support/sph_case.hpp"
 
 namespace partimix::case_test {
 namespace {
@@ -11,7 +12,7 @@ using ::testing::HasSubstr;
 
 TEST(CaseOverrides, SetChangesAValue) {
   const io::Case loaded = load_text(kMinimal2D, {"sph.spacing=0.02"});
-  EXPECT_DOUBLE_EQ(loaded.sph.spacing, 0.02);
+  EXPECT_DOUBLE_EQ(test_support::sph_config(loaded).spacing, 0.02);
   EXPECT_EQ(loaded.resolved["sph"]["spacing"], 0.02);
 }
 
@@ -22,7 +23,7 @@ TEST(CaseOverrides, LaterSetsWin) {
 
 TEST(CaseOverrides, SetCreatesMissingMaps) {
   const io::Case loaded = load_text(kMinimal2D, {"sph.density.delta=0.2", "output.frames=false"});
-  EXPECT_DOUBLE_EQ(loaded.sph.density.delta, 0.2);
+  EXPECT_DOUBLE_EQ(test_support::sph_config(loaded).density.delta, 0.2);
   EXPECT_FALSE(loaded.output.frames);
 }
 
@@ -34,14 +35,14 @@ TEST(CaseOverrides, ValueIsParsedAsYaml) {
 
 TEST(CaseOverrides, ListIndexSetsAnItemKey) {
   const io::Case loaded = load_text(kMinimal2D, {"fluid.regions[0].max=[1,2]"});
-  EXPECT_EQ(loaded.fluid.regions[0].shape->upper(), Vec3(1.0, 2.0, 1.0));
+  EXPECT_EQ(test_support::fluid_of(loaded).regions[0].shape->upper(), Vec3(1.0, 2.0, 1.0));
 }
 
 TEST(CaseOverrides, IndexJustPastTheEndAppends) {
   const io::Case loaded =
       load_text(kMinimal2D, {"fluid.regions[1]={shape: box, min: [1, 0], max: [1.5, 0.5]}"});
-  ASSERT_EQ(loaded.fluid.regions.size(), 2u);
-  EXPECT_EQ(loaded.fluid.regions[1].shape->lower(), Vec3(1.0, 0.0, -1.0));
+  ASSERT_EQ(test_support::fluid_of(loaded).regions.size(), 2u);
+  EXPECT_EQ(test_support::fluid_of(loaded).regions[1].shape->lower(), Vec3(1.0, 0.0, -1.0));
 }
 
 TEST(CaseOverrides, UnknownKeyIsNamed) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "case_files.hpp"
+#include "support/sph_case.hpp"
 
 namespace partimix::case_test {
 namespace {
@@ -87,7 +88,8 @@ TEST(CasePlate, IsAlsoAFluidRegionShape) {
   const io::Case loaded =
       load_text(replace_line(remove_line(remove_line(kMinimal2D, 17), 16), 15,
                              "    - {shape: plate, centre: [0.25, 0.5], length: 0.5, width: 1.0}"));
-  expect_bounds(*loaded.fluid.regions.at(0).shape, Vec3(0.0, 0.0, -1.0), Vec3(0.5, 1.0, 1.0));
+  expect_bounds(*test_support::fluid_of(loaded).regions.at(0).shape, Vec3(0.0, 0.0, -1.0),
+                Vec3(0.5, 1.0, 1.0));
 }
 
 TEST(CasePlate, HeightIn2DIsAnErrorNamingTheKey) {

@@ -1,4 +1,4 @@
-// fluid.viscosity (Newtonian) or fluid.rheology (any model of sph/rheology.hpp): each model
+// fluid.viscosity (Newtonian) or fluid.rheology (any model of materials/rheology.hpp): each model
 // loads with its keys and defaults, and each bad rheology is an InputError naming file, line,
 // column and key path.
 #include <gmock/gmock.h>
@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "case_files.hpp"
+#include "support/sph_case.hpp"
 
 namespace partimix::case_test {
 namespace {
@@ -25,8 +26,8 @@ std::string with_rheology(const std::vector<std::string>& keys) {
   return text;
 }
 
-sph::RheologyConfig load_rheology(const std::vector<std::string>& keys) {
-  return load_text(with_rheology(keys)).fluid.rheology;
+materials::RheologyConfig load_rheology(const std::vector<std::string>& keys) {
+  return test_support::fluid_of(load_text(with_rheology(keys))).rheology;
 }
 
 // The InputError that loading a rheology map of `keys` throws.
@@ -41,35 +42,36 @@ int line_of_key(std::size_t index) {
 
 TEST(CaseRheology, ViscosityKeyLoadsAsNewtonian) {
   const io::Case loaded = load_text(kMinimal2D);
-  EXPECT_EQ(loaded.fluid.rheology.model, "newtonian");
-  EXPECT_DOUBLE_EQ(loaded.fluid.rheology.viscosity, 1.0e-3);
-  EXPECT_DOUBLE_EQ(loaded.fluid.rheology.viscosity, 1.0e-3);
-  EXPECT_EQ(loaded.fluid.rheology.viscosity_max, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(test_support::fluid_of(loaded).rheology.model, "newtonian");
+  EXPECT_DOUBLE_EQ(test_support::fluid_of(loaded).rheology.viscosity, 1.0e-3);
+  EXPECT_DOUBLE_EQ(test_support::fluid_of(loaded).rheology.viscosity, 1.0e-3);
+  EXPECT_EQ(test_support::fluid_of(loaded).rheology.viscosity_max,
+            std::numeric_limits<double>::infinity());
   EXPECT_EQ(loaded.resolved["fluid"]["viscosity"], 1.0e-3);
   EXPECT_FALSE(loaded.resolved["fluid"].contains("rheology"));
 }
 
 TEST(CaseRheology, NewtonianMapLoads) {
   const io::Case loaded = load_text(with_rheology({"model: newtonian", "viscosity: 0.5"}));
-  EXPECT_EQ(loaded.fluid.rheology.model, "newtonian");
-  EXPECT_DOUBLE_EQ(loaded.fluid.rheology.viscosity, 0.5);
-  EXPECT_DOUBLE_EQ(loaded.fluid.rheology.viscosity, 0.5);
+  EXPECT_EQ(test_support::fluid_of(loaded).rheology.model, "newtonian");
+  EXPECT_DOUBLE_EQ(test_support::fluid_of(loaded).rheology.viscosity, 0.5);
+  EXPECT_DOUBLE_EQ(test_support::fluid_of(loaded).rheology.viscosity, 0.5);
 }
 
 TEST(CaseRheology, PowerLawLoads) {
   const io::Case loaded = load_text(with_rheology(
       {"model: power_law", "consistency: 13.9", "flow_index: 0.47", "viscosity_max: 1.0e4"}));
-  const sph::RheologyConfig& c = loaded.fluid.rheology;
+  const materials::RheologyConfig& c = test_support::fluid_of(loaded).rheology;
   EXPECT_EQ(c.model, "power_law");
   EXPECT_DOUBLE_EQ(c.consistency, 13.9);
   EXPECT_DOUBLE_EQ(c.flow_index, 0.47);
   EXPECT_DOUBLE_EQ(c.viscosity_min, 0.0);
   EXPECT_DOUBLE_EQ(c.viscosity_max, 1.0e4);
-  EXPECT_DOUBLE_EQ(loaded.fluid.rheology.viscosity, 0.0);
+  EXPECT_DOUBLE_EQ(test_support::fluid_of(loaded).rheology.viscosity, 0.0);
 }
 
 TEST(CaseRheology, HerschelBulkleyLoadsWithPapanastasiouByDefault) {
-  const sph::RheologyConfig c = load_rheology(
+  const materials::RheologyConfig c = load_rheology(
       {"model: herschel_bulkley", "yield_stress: 5", "consistency: 2", "flow_index: 1"});
   EXPECT_EQ(c.model, "herschel_bulkley");
   EXPECT_DOUBLE_EQ(c.yield_stress, 5.0);
@@ -81,7 +83,7 @@ TEST(CaseRheology, HerschelBulkleyLoadsWithPapanastasiouByDefault) {
 }
 
 TEST(CaseRheology, BinghamLoadsWithBiviscousAndBounds) {
-  const sph::RheologyConfig c =
+  const materials::RheologyConfig c =
       load_rheology({"model: bingham", "yield_stress: 5", "plastic_viscosity: 0.1",
                      "regularisation: biviscous", "viscosity_min: 0.01", "viscosity_max: 100"});
   EXPECT_EQ(c.model, "bingham");
@@ -93,7 +95,7 @@ TEST(CaseRheology, BinghamLoadsWithBiviscousAndBounds) {
 }
 
 TEST(CaseRheology, CrossLoads) {
-  const sph::RheologyConfig c =
+  const materials::RheologyConfig c =
       load_rheology({"model: cross", "zero_shear_viscosity: 10", "infinite_shear_viscosity: 0.01",
                      "time_constant: 0.5", "flow_index: 0.8"});
   EXPECT_EQ(c.model, "cross");

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "sph/rheology.hpp"
+#include "materials/rheology.hpp"
 
-namespace partimix::sph {
+namespace partimix::materials {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
@@ -238,4 +238,4 @@ TEST(RheologyBounds, RejectsDisorderedBounds) {
 }
 
 }  // namespace
-}  // namespace partimix::sph
+}  // namespace partimix::materials

@@ -36,18 +36,18 @@ namespace {
 long allocations_in_40_steps_after_warm_up(const io::Case& c) {
   app::Simulation sim = app::build_simulation(c);
   for (int k = 0; k < 20; ++k)
-    sim.solver->step(sim.solver->stable_dt());
+    sim.methods[0].solver->step(sim.methods[0].solver->stable_dt());
   const long before = allocations.load();
   for (int k = 0; k < 40; ++k)
-    sim.solver->step(sim.solver->stable_dt());
+    sim.methods[0].solver->step(sim.methods[0].solver->stable_dt());
   return allocations.load() - before;
 }
 
 io::Case dam_break() {
   io::Case c = testing_cases::dam_break_2d(0.146, 0.146 / 10.0);
-  c.sph.density.shepard = true;
-  c.sph.density.shepard_interval = 7;
-  c.sph.sort_interval = 5;
+  testing_cases::sph_of(c).config.density.shepard = true;
+  testing_cases::sph_of(c).config.density.shepard_interval = 7;
+  testing_cases::sph_of(c).config.sort_interval = 5;
   return c;
 }
 
@@ -58,11 +58,11 @@ TEST(NoAllocation, SolverStepsDoNotAllocateAfterWarmUp) {
 // A shear-thinning fluid: shear rates, viscosities and the stress-form viscous operator.
 TEST(NoAllocation, NonNewtonianStressFormStepsDoNotAllocate) {
   io::Case c = dam_break();
-  c.fluid.rheology.model = "power_law";
-  c.fluid.rheology.consistency = 0.1;
-  c.fluid.rheology.flow_index = 0.5;
-  c.fluid.rheology.viscosity_max = 1.0;
-  c.sph.viscous_operator = "stress";
+  testing_cases::sph_of(c).fluid.rheology.model = "power_law";
+  testing_cases::sph_of(c).fluid.rheology.consistency = 0.1;
+  testing_cases::sph_of(c).fluid.rheology.flow_index = 0.5;
+  testing_cases::sph_of(c).fluid.rheology.viscosity_max = 1.0;
+  testing_cases::sph_of(c).config.viscous_operator = "stress";
   EXPECT_EQ(allocations_in_40_steps_after_warm_up(c), 0);
 }
 

@@ -23,7 +23,7 @@ inline CaseRun run_case(const io::Case& the_case) {
   app::RunOptions options;
   options.output_dir = out.path();
   options.show_progress = false;
-  app::Runner runner(the_case, *simulation.solver, simulation.bodies.get(), options);
+  app::Runner runner(the_case, simulation, options);
   CaseRun run;
   run.summary = runner.run();
   run.figures = runner.figures();

@@ -22,7 +22,7 @@ constexpr double kWidth = 0.01;
 
 struct Shear {
   const char* name;
-  sph::RheologyConfig rheology;
+  materials::RheologyConfig rheology;
   double shear_rate;  // imposed U / L [1/s]
   double end_time;    // [s]
 };
@@ -38,9 +38,9 @@ Measured run_couette(const Shear& shear) {
   const double speed = shear.shear_rate * kWidth;
   io::Case c =
       testing_cases::poiseuille_2d(kWidth, 12 * spacing, spacing, 0.0, 1000.0, 0.0, 1.2 * speed);
-  c.fluid.rheology = shear.rheology;
+  testing_cases::sph_of(c).fluid.rheology = shear.rheology;
   app::Simulation sim = app::build_simulation(c);
-  ParticleStore& store = *sim.store;
+  ParticleStore& store = *sim.methods[0].store;
   for (std::size_t i = 0; i < store.size(); ++i) {
     if (!store.is_fluid(i) && store.position()[i].y() > kWidth) {
       store.velocity()[i] = Vec3(speed, 0.0, 0.0);
@@ -48,8 +48,8 @@ Measured run_couette(const Shear& shear) {
   }
   double t = 0.0;
   while (t < shear.end_time) {
-    const double dt = std::min(sim.solver->stable_dt(), shear.end_time - t);
-    sim.solver->step(dt);
+    const double dt = std::min(sim.methods[0].solver->stable_dt(), shear.end_time - t);
+    sim.methods[0].solver->step(dt);
     t += dt;
   }
   const auto& rate = store.find_scalar("shear_rate")->values;
@@ -62,7 +62,7 @@ Measured run_couette(const Shear& shear) {
     m.mean_shear_rate += rate[i];
     m.mean_viscosity += viscosity[i];
     const double y = store.position()[i].y();
-    const double reach = 2.0 * c.sph.smoothing_length();
+    const double reach = 2.0 * testing_cases::sph_of(c).config.smoothing_length();
     if (y > reach && y < kWidth - reach) {
       m.largest_interior_error = std::max(m.largest_interior_error,
                                           std::abs(rate[i] - shear.shear_rate) / shear.shear_rate);
@@ -74,8 +74,8 @@ Measured run_couette(const Shear& shear) {
   return m;
 }
 
-sph::RheologyConfig cmc() {
-  sph::RheologyConfig r;
+materials::RheologyConfig cmc() {
+  materials::RheologyConfig r;
   r.model = "power_law";
   r.consistency = 13.9;
   r.flow_index = 0.47;
@@ -104,8 +104,8 @@ TEST(Couette, PowerLawShearRateIsUniformAndWallStressIsKGammaDotToTheN) {
   EXPECT_NEAR(stress, exact, 0.02 * exact);
 }
 
-sph::RheologyConfig thinning(const char* model) {
-  sph::RheologyConfig r;
+materials::RheologyConfig thinning(const char* model) {
+  materials::RheologyConfig r;
   r.model = model;
   r.zero_shear_viscosity = 10.0;
   r.infinite_shear_viscosity = 0.01;
@@ -119,7 +119,7 @@ class ViscosityCurve : public ::testing::TestWithParam<Shear> {};
 TEST_P(ViscosityCurve, SolverViscosityUnderImposedShearFollowsTheModel) {
   const Shear& shear = GetParam();
   const Measured m = run_couette(shear);
-  const sph::BoundedRheology model(shear.rheology);
+  const materials::BoundedRheology model(shear.rheology);
   const double exact = model.viscosity(shear.shear_rate);
   std::printf("%s at %.3g 1/s: viscosity %.5g (model %.5g), mean shear rate %.4g\n", shear.name,
               shear.shear_rate, m.mean_viscosity, exact, m.mean_shear_rate);

@@ -54,21 +54,22 @@ TEST(DamBreak, SurgeFrontFollowsMartinAndMoyce) {
   for (const Point& point : all) {
     const double target = point.T / time_scale;
     while (t < target - 1e-12) {
-      const double dt = std::min(sim.solver->stable_dt(), target - t);
-      sim.solver->step(dt);
+      const double dt = std::min(sim.methods[0].solver->stable_dt(), target - t);
+      sim.methods[0].solver->step(dt);
       t += dt;
     }
     double x = 0.0;
-    front.sample(sim.solver->particles(), t, std::span<double>(&x, 1));
+    front.sample(sim.methods[0].solver->particles(), t, std::span<double>(&x, 1));
     const double deviation = (x / a - point.Z) / point.Z;
     const bool martin_moyce =
         std::find_if(kMartinMoyce.begin(), kMartinMoyce.end(),
                      [&](const Point& p) { return p.T == point.T; }) != kMartinMoyce.end();
     std::printf("dam break T = %.3f: Z = %.3f, %s %.3f, deviation %+.3f\n", point.T, x / a,
                 martin_moyce ? "Martin-Moyce" : "Koshizuka-Oka", point.Z, deviation);
-    for (std::size_t i = 0; i < sim.solver->particles().size(); ++i) {
-      if (sim.solver->particles().is_fluid(i)) {
-        ASSERT_GT(sim.solver->particles().position()[i].y(), 0.0) << "fluid below the floor";
+    for (std::size_t i = 0; i < sim.methods[0].solver->particles().size(); ++i) {
+      if (sim.methods[0].solver->particles().is_fluid(i)) {
+        ASSERT_GT(sim.methods[0].solver->particles().position()[i].y(), 0.0)
+            << "fluid below the floor";
       }
     }
     if (martin_moyce) {

@@ -55,20 +55,20 @@ TEST_P(HydrostaticTank, PressureFollowsDepthAndNoParticleCrossesTheWall) {
   const double rho0 = 1000.0;
   const double spacing = 0.025;
   io::Case c = testing_cases::tank_2d(width, depth, spacing);
-  c.fluid.rheology.viscosity = 50.0;
-  GetParam().apply(c.sph);
+  testing_cases::sph_of(c).fluid.rheology.viscosity = 50.0;
+  GetParam().apply(testing_cases::sph_of(c).config);
   app::Simulation sim = app::build_simulation(c);
 
   double t = 0.0;
   while (t < 1.2) {
-    const double dt = sim.solver->stable_dt();
-    sim.solver->step(dt);
+    const double dt = sim.methods[0].solver->stable_dt();
+    sim.methods[0].solver->step(dt);
     t += dt;
   }
 
-  const ParticleStore& store = sim.solver->particles();
+  const ParticleStore& store = sim.methods[0].solver->particles();
   const auto& pressure = store.find_scalar("pressure")->values;
-  const double h = c.sph.smoothing_length();
+  const double h = testing_cases::sph_of(c).config.smoothing_length();
   double worst = 0.0;
   double sum2 = 0.0;
   int count = 0;

@@ -21,7 +21,7 @@ constexpr double kDensity = 1000.0;
 
 struct Flow {
   const char* name;
-  sph::RheologyConfig rheology;
+  materials::RheologyConfig rheology;
   double force;      // F [m/s^2]
   double end_time;   // long enough to be steady [s]
   double tolerance;  // L2 deviation / u_max
@@ -29,7 +29,7 @@ struct Flow {
 };
 
 double exact_velocity(const Flow& flow, double y) {
-  const sph::RheologyConfig& r = flow.rheology;
+  const materials::RheologyConfig& r = flow.rheology;
   const bool power_law = r.model == "power_law";
   const double n = r.model == "bingham" ? 1.0 : r.flow_index;
   const double k = r.model == "bingham" ? r.plastic_viscosity : r.consistency;
@@ -82,16 +82,16 @@ TEST_P(NonNewtonianPoiseuille, SteadyProfileMatchesTheAnalyticalSolution) {
   const double u_max = exact_velocity(flow, 0.5 * kWidth);
   io::Case c = testing_cases::poiseuille_2d(kWidth, 12 * spacing, spacing, flow.force, kDensity,
                                             0.0, 1.2 * u_max);
-  c.fluid.rheology = flow.rheology;
-  c.sph.viscosity_mean = flow.viscosity_mean;
+  testing_cases::sph_of(c).fluid.rheology = flow.rheology;
+  testing_cases::sph_of(c).config.viscosity_mean = flow.viscosity_mean;
   app::Simulation sim = app::build_simulation(c);
   double t = 0.0;
   while (t < flow.end_time) {
-    const double dt = std::min(sim.solver->stable_dt(), flow.end_time - t);
-    sim.solver->step(dt);
+    const double dt = std::min(sim.methods[0].solver->stable_dt(), flow.end_time - t);
+    sim.methods[0].solver->step(dt);
     t += dt;
   }
-  const ParticleStore& store = sim.solver->particles();
+  const ParticleStore& store = sim.methods[0].solver->particles();
   double sum2 = 0.0;
   int count = 0;
   for (std::size_t i = 0; i < store.size(); ++i) {
@@ -108,8 +108,8 @@ TEST_P(NonNewtonianPoiseuille, SteadyProfileMatchesTheAnalyticalSolution) {
     expect_plug(flow, store, spacing);
 }
 
-sph::RheologyConfig power_law(double k, double n, double viscosity_max) {
-  sph::RheologyConfig r;
+materials::RheologyConfig power_law(double k, double n, double viscosity_max) {
+  materials::RheologyConfig r;
   r.model = "power_law";
   r.consistency = k;
   r.flow_index = n;
@@ -117,8 +117,8 @@ sph::RheologyConfig power_law(double k, double n, double viscosity_max) {
   return r;
 }
 
-sph::RheologyConfig herschel_bulkley(double tau0, double k, double n, double viscosity_max) {
-  sph::RheologyConfig r;
+materials::RheologyConfig herschel_bulkley(double tau0, double k, double n, double viscosity_max) {
+  materials::RheologyConfig r;
   r.model = "herschel_bulkley";
   r.yield_stress = tau0;
   r.consistency = k;
@@ -127,8 +127,8 @@ sph::RheologyConfig herschel_bulkley(double tau0, double k, double n, double vis
   return r;
 }
 
-sph::RheologyConfig bingham(double tau0, double mu_p, double viscosity_max) {
-  sph::RheologyConfig r;
+materials::RheologyConfig bingham(double tau0, double mu_p, double viscosity_max) {
+  materials::RheologyConfig r;
   r.model = "bingham";
   r.yield_stress = tau0;
   r.plastic_viscosity = mu_p;

@@ -69,16 +69,16 @@ TEST_P(Poiseuille, VelocityProfileFollowsTheTransientSolution) {
   const double spacing = kWidth / 20.0;
   io::Case c = testing_cases::poiseuille_2d(kWidth, 12 * spacing, spacing, kForce, 1000.0,
                                             1000.0 * kNu, kMaxVelocity);
-  c.sph.viscous_operator = GetParam();
+  testing_cases::sph_of(c).config.viscous_operator = GetParam();
   app::Simulation sim = app::build_simulation(c);
   double t = 0.0;
   for (double check : {0.0225, 0.045, 0.1125, 0.225, 1.0}) {
     while (t < check - 1e-12) {
-      const double dt = std::min(sim.solver->stable_dt(), check - t);
-      sim.solver->step(dt);
+      const double dt = std::min(sim.methods[0].solver->stable_dt(), check - t);
+      sim.methods[0].solver->step(dt);
       t += dt;
     }
-    const Deviation d = deviation_from_exact(sim.solver->particles(), t);
+    const Deviation d = deviation_from_exact(sim.methods[0].solver->particles(), t);
     std::printf("Poiseuille t = %.4f s: L2 deviation %.4f, largest %.4f of u_max\n", t, d.l2,
                 d.largest);
     EXPECT_LT(d.l2, 0.025) << "at t = " << t;

@@ -1,6 +1,6 @@
-#include "sph/rheology/bingham.hpp"
+#include "materials/rheology/bingham.hpp"
 
-namespace partimix::sph {
+namespace partimix::materials {
 
 Bingham::Bingham(const YieldRegularisation& yield, double plastic_viscosity)
     : yield_(yield), plastic_viscosity_(plastic_viscosity) {}
@@ -9,4 +9,4 @@ double Bingham::apparent_viscosity(double shear_rate) const {
   return yield_.viscosity(shear_rate) + plastic_viscosity_;
 }
 
-}  // namespace partimix::sph
+}  // namespace partimix::materials

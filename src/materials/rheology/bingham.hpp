@@ -1,11 +1,11 @@
 #pragma once
 // Bingham plastic (Bingham 1922): tau = tau0 + mu_p gamma_dot above the yield stress, so
 // eta = tau0 / gamma_dot + mu_p, with the yield-stress part regularised
-// (sph/rheology/yield_regularisation.hpp).
-#include "sph/rheology.hpp"
-#include "sph/rheology/yield_regularisation.hpp"
+// (materials/rheology/yield_regularisation.hpp).
+#include "materials/rheology.hpp"
+#include "materials/rheology/yield_regularisation.hpp"
 
-namespace partimix::sph {
+namespace partimix::materials {
 
 class Bingham final : public Rheology {
  public:
@@ -17,4 +17,4 @@ class Bingham final : public Rheology {
   double plastic_viscosity_;
 };
 
-}  // namespace partimix::sph
+}  // namespace partimix::materials

@@ -1,8 +1,8 @@
-#include "sph/rheology/carreau.hpp"
+#include "materials/rheology/carreau.hpp"
 
 #include <cmath>
 
-namespace partimix::sph {
+namespace partimix::materials {
 
 CarreauYasuda::CarreauYasuda(double zero_shear_viscosity, double infinite_shear_viscosity,
                              double time_constant, double flow_index, double yasuda_exponent)
@@ -17,4 +17,4 @@ double CarreauYasuda::apparent_viscosity(double shear_rate) const {
   return eta_inf_ + (eta0_ - eta_inf_) * thinning;
 }
 
-}  // namespace partimix::sph
+}  // namespace partimix::materials

@@ -3,9 +3,9 @@
 // eta = eta_inf + (eta0 - eta_inf) (1 + (lambda gamma_dot)^a)^((n-1)/a).
 // n is the power-law index at high shear rate: eta - eta_inf ~ gamma_dot^(n-1); n < 1 thins,
 // n > 1 thickens without bound.
-#include "sph/rheology.hpp"
+#include "materials/rheology.hpp"
 
-namespace partimix::sph {
+namespace partimix::materials {
 
 class CarreauYasuda final : public Rheology {
  public:
@@ -21,4 +21,4 @@ class CarreauYasuda final : public Rheology {
   double a_;
 };
 
-}  // namespace partimix::sph
+}  // namespace partimix::materials

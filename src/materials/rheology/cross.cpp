@@ -1,8 +1,8 @@
-#include "sph/rheology/cross.hpp"
+#include "materials/rheology/cross.hpp"
 
 #include <cmath>
 
-namespace partimix::sph {
+namespace partimix::materials {
 
 Cross::Cross(double zero_shear_viscosity, double infinite_shear_viscosity, double time_constant,
              double flow_index)
@@ -15,4 +15,4 @@ double Cross::apparent_viscosity(double shear_rate) const {
   return eta_inf_ + (eta0_ - eta_inf_) / (1.0 + std::pow(lambda_ * shear_rate, n_));
 }
 
-}  // namespace partimix::sph
+}  // namespace partimix::materials

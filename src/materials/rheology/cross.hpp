@@ -3,9 +3,9 @@
 // n is Cross's rate constant: at high shear rate eta - eta_inf ~ gamma_dot^(-n), a power law of
 // index 1 - n (some authors write the exponent as 1 - n instead). eta runs from eta0 at
 // gamma_dot = 0 down to eta_inf as gamma_dot -> infinity.
-#include "sph/rheology.hpp"
+#include "materials/rheology.hpp"
 
-namespace partimix::sph {
+namespace partimix::materials {
 
 class Cross final : public Rheology {
  public:
@@ -20,4 +20,4 @@ class Cross final : public Rheology {
   double n_;
 };
 
-}  // namespace partimix::sph
+}  // namespace partimix::materials

@@ -1,6 +1,6 @@
-#include "sph/rheology/herschel_bulkley.hpp"
+#include "materials/rheology/herschel_bulkley.hpp"
 
-namespace partimix::sph {
+namespace partimix::materials {
 
 HerschelBulkley::HerschelBulkley(const YieldRegularisation& yield, double consistency,
                                  double flow_index)
@@ -10,4 +10,4 @@ double HerschelBulkley::apparent_viscosity(double shear_rate) const {
   return yield_.viscosity(shear_rate) + power_law_.apparent_viscosity(shear_rate);
 }
 
-}  // namespace partimix::sph
+}  // namespace partimix::materials

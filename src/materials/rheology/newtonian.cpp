@@ -1,6 +1,6 @@
-#include "sph/rheology/newtonian.hpp"
+#include "materials/rheology/newtonian.hpp"
 
-namespace partimix::sph {
+namespace partimix::materials {
 
 Newtonian::Newtonian(double viscosity) : viscosity_(viscosity) {}
 
@@ -8,4 +8,4 @@ double Newtonian::apparent_viscosity(double) const {
   return viscosity_;
 }
 
-}  // namespace partimix::sph
+}  // namespace partimix::materials

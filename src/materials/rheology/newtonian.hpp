@@ -1,8 +1,8 @@
 #pragma once
 // Newtonian fluid: eta = mu, whatever the shear rate (docs/rheology.md, "Newtonian").
-#include "sph/rheology.hpp"
+#include "materials/rheology.hpp"
 
-namespace partimix::sph {
+namespace partimix::materials {
 
 class Newtonian final : public Rheology {
  public:
@@ -13,4 +13,4 @@ class Newtonian final : public Rheology {
   double viscosity_;
 };
 
-}  // namespace partimix::sph
+}  // namespace partimix::materials

@@ -1,8 +1,8 @@
-#include "sph/rheology/power_law.hpp"
+#include "materials/rheology/power_law.hpp"
 
 #include <cmath>
 
-namespace partimix::sph {
+namespace partimix::materials {
 
 PowerLaw::PowerLaw(double consistency, double flow_index)
     : consistency_(consistency), flow_index_(flow_index) {}
@@ -12,4 +12,4 @@ double PowerLaw::apparent_viscosity(double shear_rate) const {
   return consistency_ * std::pow(shear_rate, flow_index_ - 1.0);
 }
 
-}  // namespace partimix::sph
+}  // namespace partimix::materials

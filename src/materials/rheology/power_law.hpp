@@ -2,9 +2,9 @@
 // Power-law (Ostwald-de Waele) fluid: tau = K gamma_dot^n, so eta = K gamma_dot^(n-1)
 // (docs/rheology.md, "Power law"). Shear-thinning for n < 1 (eta -> infinity as
 // gamma_dot -> 0), shear-thickening for n > 1 (eta -> infinity as gamma_dot -> infinity).
-#include "sph/rheology.hpp"
+#include "materials/rheology.hpp"
 
-namespace partimix::sph {
+namespace partimix::materials {
 
 class PowerLaw final : public Rheology {
  public:
@@ -17,4 +17,4 @@ class PowerLaw final : public Rheology {
   double flow_index_;
 };
 
-}  // namespace partimix::sph
+}  // namespace partimix::materials

@@ -1,10 +1,10 @@
-#include "sph/rheology/yield_regularisation.hpp"
+#include "materials/rheology/yield_regularisation.hpp"
 
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
-namespace partimix::sph {
+namespace partimix::materials {
 
 YieldRegularisation::YieldRegularisation(double yield_stress, const std::string& regularisation,
                                          double exponent)
@@ -40,4 +40,4 @@ double YieldRegularisation::biviscous(double shear_rate) const {
   return yield_stress_ / shear_rate;
 }
 
-}  // namespace partimix::sph
+}  // namespace partimix::materials

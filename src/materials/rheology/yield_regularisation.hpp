@@ -7,7 +7,7 @@
 //   viscosity_max caps it, giving the bi-viscous model (O'Donovan and Tanner 1984).
 #include <string>
 
-namespace partimix::sph {
+namespace partimix::materials {
 
 class YieldRegularisation {
  public:
@@ -26,4 +26,4 @@ class YieldRegularisation {
   bool papanastasiou_;
 };
 
-}  // namespace partimix::sph
+}  // namespace partimix::materials

@@ -1,15 +1,16 @@
-#include "dem/mesh_wall.hpp"
+#include "geometry/mesh_shell_surface.hpp"
 
 #include <cmath>
 #include <limits>
+#include <utility>
 
-namespace partimix::dem {
+namespace partimix::geometry {
 
-MeshWall::MeshWall(const geometry::TriangleSoup& triangles)
-    : bvh_(triangles),
+MeshShellSurface::MeshShellSurface(const TriangleSoup& triangles)
+    : bvh_(std::make_shared<const TriangleBvh>(triangles)),
       lower_(Vec3::Constant(std::numeric_limits<double>::infinity())),
       upper_(Vec3::Constant(-std::numeric_limits<double>::infinity())) {
-  for (const geometry::Triangle& triangle : triangles) {
+  for (const Triangle& triangle : triangles) {
     for (const Vec3& corner : triangle.corner) {
       lower_ = lower_.cwiseMin(corner);
       upper_ = upper_.cwiseMax(corner);
@@ -17,12 +18,16 @@ MeshWall::MeshWall(const geometry::TriangleSoup& triangles)
   }
 }
 
-bool MeshWall::nearest(const Vec3& centre, double reach, SurfacePoint& out) const {
+MeshShellSurface::MeshShellSurface(std::shared_ptr<const TriangleBvh> bvh, const Vec3& lower,
+                                   const Vec3& upper)
+    : bvh_(std::move(bvh)), lower_(lower), upper_(upper) {}
+
+bool MeshShellSurface::nearest(const Vec3& centre, double reach, SurfacePoint& out) const {
   const bool near_box = (centre.array() > lower_.array() - reach).all() &&
                         (centre.array() < upper_.array() + reach).all();
   if (!near_box)
     return false;
-  const geometry::ClosestPoint closest = bvh_.nearest(centre);
+  const ClosestPoint closest = bvh_->nearest(centre);
   const double gap = std::sqrt(closest.distance_squared);
   if (gap > reach || gap == 0.0)
     return false;
@@ -30,4 +35,4 @@ bool MeshWall::nearest(const Vec3& centre, double reach, SurfacePoint& out) cons
   return true;
 }
 
-}  // namespace partimix::dem
+}  // namespace partimix::geometry

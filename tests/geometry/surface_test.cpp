@@ -1,15 +1,15 @@
-// The nearest point, normal and gap of the DEM wall surfaces (docs/dem.md, "Walls"), against
-// points whose answer is known by construction, to 1e-12.
+// The nearest point, normal and gap of the plane, drum, cone and mesh contact surfaces
+// (docs/dem.md, "Walls"), against points whose answer is known by construction, to 1e-12.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "dem/cone_wall.hpp"
-#include "dem/drum_wall.hpp"
-#include "dem/mesh_wall.hpp"
-#include "dem/plane_wall.hpp"
+#include "geometry/cone_surface.hpp"
+#include "geometry/drum_surface.hpp"
+#include "geometry/mesh_shell_surface.hpp"
+#include "geometry/plane_surface.hpp"
 
-namespace partimix::dem {
+namespace partimix::geometry {
 namespace {
 
 constexpr double kTolerance = 1e-12;
@@ -18,8 +18,8 @@ void expect_near(const Vec3& a, const Vec3& b) {
   EXPECT_LT((a - b).norm(), kTolerance) << a.transpose() << " vs " << b.transpose();
 }
 
-TEST(WallSurface, PlaneGapIsTheSignedDistanceOnTheNormalSide) {
-  const PlaneWall plane(Vec3(0.0, 1.0, 0.0), Vec3(0.0, 2.0, 0.0));
+TEST(Surface, PlaneGapIsTheSignedDistanceOnTheNormalSide) {
+  const PlaneSurface plane(Vec3(0.0, 1.0, 0.0), Vec3(0.0, 2.0, 0.0));
   SurfacePoint s;
   ASSERT_TRUE(plane.nearest(Vec3(3.0, 1.5, -2.0), 1.0, s));
   EXPECT_NEAR(s.gap, 0.5, kTolerance);
@@ -28,8 +28,8 @@ TEST(WallSurface, PlaneGapIsTheSignedDistanceOnTheNormalSide) {
   EXPECT_FALSE(plane.nearest(Vec3(0.0, 2.5, 0.0), 1.0, s));
 }
 
-TEST(WallSurface, DrumNormalPointsToTheAxis) {
-  const DrumWall drum(Vec3(1.0, 0.0, 0.0), Vec3(0.0, 0.0, 5.0), 0.1);
+TEST(Surface, DrumNormalPointsToTheAxis) {
+  const DrumSurface drum(Vec3(1.0, 0.0, 0.0), Vec3(0.0, 0.0, 5.0), 0.1);
   SurfacePoint s;
   ASSERT_TRUE(drum.nearest(Vec3(1.0, -0.098, 7.0), 0.01, s));
   EXPECT_NEAR(s.gap, 0.002, kTolerance);
@@ -38,9 +38,9 @@ TEST(WallSurface, DrumNormalPointsToTheAxis) {
   EXPECT_FALSE(drum.nearest(Vec3(1.0, 0.0, 0.0), 0.01, s));
 }
 
-TEST(WallSurface, ConeNearestPointOnTheGeneratorAndOnTheRim) {
+TEST(Surface, ConeNearestPointOnTheGeneratorAndOnTheRim) {
   // Radius 1 at z = 0 growing to 2 at z = 1: the generator makes 45 degrees with the axis.
-  const ConeWall cone(Vec3::Zero(), Vec3::UnitZ(), 1.0, 2.0, 1.0);
+  const ConeSurface cone(Vec3::Zero(), Vec3::UnitZ(), 1.0, 2.0, 1.0);
   SurfacePoint s;
   ASSERT_TRUE(cone.nearest(Vec3(1.0, 0.0, 0.5), 1.0, s));
   const double h = std::sqrt(0.5);
@@ -52,10 +52,10 @@ TEST(WallSurface, ConeNearestPointOnTheGeneratorAndOnTheRim) {
   EXPECT_NEAR(s.gap, std::sqrt(0.02), kTolerance);
 }
 
-TEST(WallSurface, MeshIsTwoSidedAndTakesTheNearestFeature) {
-  geometry::TriangleSoup square{{{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0)}},
-                                {{Vec3(0, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)}}};
-  const MeshWall mesh(square);
+TEST(Surface, MeshIsTwoSidedAndTakesTheNearestFeature) {
+  TriangleSoup square{{{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0)}},
+                      {{Vec3(0, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)}}};
+  const MeshShellSurface mesh(square);
   SurfacePoint s;
   ASSERT_TRUE(mesh.nearest(Vec3(0.3, 0.6, -0.2), 0.5, s));
   EXPECT_NEAR(s.gap, 0.2, kTolerance);
@@ -67,4 +67,4 @@ TEST(WallSurface, MeshIsTwoSidedAndTakesTheNearestFeature) {
 }
 
 }  // namespace
-}  // namespace partimix::dem
+}  // namespace partimix::geometry

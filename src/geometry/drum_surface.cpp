@@ -1,8 +1,8 @@
-#include "dem/drum_wall.hpp"
+#include "geometry/drum_surface.hpp"
 
-namespace partimix::dem {
+namespace partimix::geometry {
 
-bool DrumWall::nearest(const Vec3& centre, double reach, SurfacePoint& out) const {
+bool DrumSurface::nearest(const Vec3& centre, double reach, SurfacePoint& out) const {
   const Vec3 offset = centre - axis_point_;
   const Vec3 radial = offset - offset.dot(axis_) * axis_;
   const double r = radial.norm();
@@ -14,4 +14,4 @@ bool DrumWall::nearest(const Vec3& centre, double reach, SurfacePoint& out) cons
   return true;
 }
 
-}  // namespace partimix::dem
+}  // namespace partimix::geometry

@@ -1,12 +1,12 @@
-#include "dem/cone_wall.hpp"
+#include "geometry/cone_surface.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace partimix::dem {
+namespace partimix::geometry {
 
-ConeWall::ConeWall(const Vec3& axis_point, const Vec3& axis, double radius_0, double radius_1,
-                   double height)
+ConeSurface::ConeSurface(const Vec3& axis_point, const Vec3& axis, double radius_0, double radius_1,
+                         double height)
     : axis_point_(axis_point),
       axis_(axis.normalized()),
       radius_0_(radius_0),
@@ -18,7 +18,7 @@ ConeWall::ConeWall(const Vec3& axis_point, const Vec3& axis, double radius_0, do
 
 // In the meridian plane through the centre, (z, r): the nearest point of the generator from
 // (0, r0) to (z1, r1), mapped back with the radial unit vector of the centre.
-bool ConeWall::nearest(const Vec3& centre, double reach, SurfacePoint& out) const {
+bool ConeSurface::nearest(const Vec3& centre, double reach, SurfacePoint& out) const {
   const Vec3 offset = centre - axis_point_;
   const double z = offset.dot(axis_);
   const Vec3 radial = offset - z * axis_;
@@ -41,4 +41,4 @@ bool ConeWall::nearest(const Vec3& centre, double reach, SurfacePoint& out) cons
   return true;
 }
 
-}  // namespace partimix::dem
+}  // namespace partimix::geometry

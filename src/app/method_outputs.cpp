@@ -1,0 +1,111 @@
+#include "app/method_outputs.hpp"
+
+#include <fmt/format.h>
+
+#include "analysis/kinetic_energy.hpp"
+#include "analysis/max_speed.hpp"
+#include "core/error.hpp"
+#include "io/vtk_frame_writer.hpp"
+
+namespace partimix::app {
+namespace {
+
+analysis::AnalysisOptions options_of(const io::AnalysisSpec& spec, const io::Case& the_case,
+                                     const io::MethodSection& section,
+                                     const geometry::MovingBodies* bodies) {
+  analysis::AnalysisOptions options;
+  options.axis = spec.axis;
+  options.diameter = spec.diameter;
+  options.metzner_otto = spec.metzner_otto;
+  options.fluid = section.flow_scales().value_or(analysis::FlowScales{});
+  options.mixing = spec.mixing;
+  options.packing = spec.packing;
+  options.profile = spec.profile;
+  options.repose = spec.repose;
+  if (spec.type == "body_loads" || spec.type == "power_number") {
+    if (bodies == nullptr || static_cast<std::size_t>(spec.body) >= bodies->count()) {
+      throw RunError(fmt::format("the analysis '{}' needs the bodies of method {}, which has none",
+                                 spec.type, spec.method));
+    }
+    const auto body = static_cast<std::size_t>(spec.body);
+    options.body = {spec.body, &bodies->motion(body), the_case.walls[body].motion,
+                    spec.vessel_axis_point, spec.average_revolutions};
+  }
+  return options;
+}
+
+}  // namespace
+
+// Kinetic energy reads the particle fields at set-up: its rotational column exists only for
+// particles with angular velocities and radii (DEM).
+MethodOutputs::MethodOutputs(const io::Case& the_case, std::size_t m,
+                             const io::MethodInstance& method)
+    : name_(the_case.methods[m].name), method_(method) {
+  analyses_.push_back(std::make_unique<analysis::KineticEnergy>(*method.store));
+  analyses_.push_back(std::make_unique<analysis::MaxSpeed>());
+  const io::MethodSection& section = *the_case.methods[m].section;
+  for (const io::AnalysisSpec& spec : the_case.analyses) {
+    if (spec.method != name_)
+      continue;
+    analyses_.push_back(analysis::analysis_registry().create(
+        spec.type, options_of(spec, the_case, section, method.bodies.get())));
+  }
+  for (const auto& a : analyses_) {
+    column_count_ += a->columns().size();
+    needs_body_forces_ = needs_body_forces_ || a->needs_body_forces();
+  }
+}
+
+std::vector<analysis::Column> MethodOutputs::columns(bool prefixed) const {
+  std::vector<analysis::Column> columns;
+  for (const auto& a : analyses_) {
+    for (analysis::Column column : a->columns()) {
+      if (prefixed)
+        column.name = name_ + "." + column.name;
+      columns.push_back(std::move(column));
+    }
+  }
+  return columns;
+}
+
+void MethodOutputs::sample(double time, std::span<double> values) {
+  if (needs_body_forces_)
+    method_.solver->update_body_forces();
+  std::size_t first = 0;
+  for (const auto& a : analyses_) {
+    const std::size_t count = a->columns().size();
+    a->sample(*method_.store, time, values.subspan(first, count));
+    first += count;
+  }
+}
+
+void MethodOutputs::replay(double time, std::span<const double> values) {
+  std::size_t first = 0;
+  for (const auto& a : analyses_) {
+    const std::size_t count = a->columns().size();
+    a->replay(time, values.subspan(first, count));
+    first += count;
+  }
+}
+
+void MethodOutputs::add_figures(std::map<std::string, double>& figures, bool prefixed) const {
+  std::map<std::string, double> own;
+  for (const auto& a : analyses_)
+    a->add_figures(own);
+  for (const auto& [figure, value] : own)
+    figures[prefixed ? name_ + "." + figure : figure] = value;
+}
+
+void MethodOutputs::open_frames(const std::filesystem::path& output_dir,
+                                std::vector<io::PvdEntry> entries) {
+  collection_ = std::make_unique<io::PvdWriter>(output_dir / collection_name(), std::move(entries));
+}
+
+void MethodOutputs::write_frame(const std::filesystem::path& output_dir, double time) {
+  const std::string file =
+      fmt::format("frames/{}_{:06d}.vtp", name_, collection_->entries().size());
+  io::write_vtp_frame(output_dir / file, *method_.store, time);
+  collection_->add(time, file);
+}
+
+}  // namespace partimix::app

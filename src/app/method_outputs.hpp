@@ -1,0 +1,51 @@
+#pragma once
+// What a run writes of one method (DESIGN.md, "Inputs, outputs, errors"): its analyses, which
+// fill its part of each series.csv row, and its frame series, frames/<method>_NNNNNN.vtp listed
+// in <method>.pvd. With several methods every series column is named <method>.<column>.
+#include <filesystem>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "analysis/analysis.hpp"
+#include "io/case.hpp"
+#include "io/method_type.hpp"
+#include "io/pvd_writer.hpp"
+
+namespace partimix::app {
+
+class MethodOutputs {
+ public:
+  // The analyses of method `m` of the case (kinetic energy and the largest speed, then the
+  // case's analyses of this method, in case order). Throws RunError when an analysis needs
+  // what the method does not have (bodies).
+  MethodOutputs(const io::Case& the_case, std::size_t m, const io::MethodInstance& method);
+
+  const std::string& name() const { return name_; }
+  // The series columns of the analyses, prefixed with "<method>." when `prefixed`.
+  std::vector<analysis::Column> columns(bool prefixed) const;
+  std::size_t column_count() const { return column_count_; }
+
+  // Samples every analysis into `values` (column_count() of them).
+  void sample(double time, std::span<double> values);
+  // Gives the analyses the values they sampled before a checkpoint (Analysis::replay).
+  void replay(double time, std::span<const double> values);
+  void add_figures(std::map<std::string, double>& figures, bool prefixed) const;
+
+  // The frame series: starts the collection afresh, or with the frames before a checkpoint.
+  void open_frames(const std::filesystem::path& output_dir, std::vector<io::PvdEntry> entries);
+  void write_frame(const std::filesystem::path& output_dir, double time);
+  const std::vector<io::PvdEntry>& frames() const { return collection_->entries(); }
+  std::string collection_name() const { return name_ + ".pvd"; }
+
+ private:
+  std::string name_;
+  const io::MethodInstance& method_;
+  std::vector<std::unique_ptr<analysis::Analysis>> analyses_;
+  std::size_t column_count_ = 0;
+  bool needs_body_forces_ = false;
+  std::unique_ptr<io::PvdWriter> collection_;
+};
+
+}  // namespace partimix::app

@@ -1,0 +1,159 @@
+#include "sph/particle_generation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "geometry/lattice.hpp"
+#include "io/method_type.hpp"
+#include "sph/kernel.hpp"
+
+namespace partimix::sph {
+namespace {
+
+void append(ParticleStore& store, const std::vector<Vec3>& points, ParticleKind kind) {
+  const std::size_t first = store.size();
+  store.resize(first + points.size());
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    store.position()[first + k] = points[k];
+    store.kind()[first + k] = static_cast<std::int32_t>(kind);
+    store.id()[first + k] = static_cast<std::int64_t>(first + k);
+  }
+}
+
+void check_inside_domain(const io::Case& the_case, const ParticleStore& store) {
+  for (std::size_t i = 0; i < store.size(); ++i) {
+    if (!the_case.domain.contains(store.position()[i])) {
+      const Vec3& x = store.position()[i];
+      throw io::case_error(the_case, "domain",
+                           fmt::format("a {} particle at ({:.6g}, {:.6g}, {:.6g}) lies outside "
+                                       "the domain; enlarge domain.min/max",
+                                       store.is_fluid(i) ? "fluid" : "wall", x.x(), x.y(), x.z()));
+    }
+  }
+}
+
+// The kernel support 2h (every kernel of partimix reaches `support` h) in spacings.
+double kernel_reach(const Config& config) {
+  const auto kernel = kernel_registry().create(config.kernel);
+  const double support = kernel ? kernel->support() : 2.0;
+  return support * config.smoothing_ratio;
+}
+
+// Whether `x` lies inside the solid wall or closer than half a spacing to its surface, where
+// the fluid must clear the body (docs/geometry-meshes.md, "Solid walls").
+// The bounding-box test first spares most fluid points the distance query (costly for a mesh).
+bool blocked_by(const io::WallSpec& wall, const Vec3& x, double spacing) {
+  if (!wall.solid)
+    return false;
+  const double clearance = 0.5 * spacing;
+  const Vec3 lo = wall.shape->lower().array() - clearance;
+  const Vec3 hi = wall.shape->upper().array() + clearance;
+  const bool near_box = (x.array() > lo.array()).all() && (x.array() < hi.array()).all();
+  return near_box && wall.shape->signed_distance(x) < clearance;
+}
+
+// The fluid lattice points of `region`, less those that a solid wall blocks.
+std::vector<Vec3> fluid_points(const io::Case& the_case, double spacing,
+                               const FluidRegion& region) {
+  std::vector<Vec3> points = geometry::fill(*region.shape, spacing, the_case.domain);
+  std::erase_if(points, [&](const Vec3& x) {
+    return std::any_of(the_case.walls.begin(), the_case.walls.end(),
+                       [&](const io::WallSpec& wall) { return blocked_by(wall, x, spacing); });
+  });
+  return points;
+}
+
+// The wall particles of wall `w`: layers inside a solid body, outside a container.
+std::vector<Vec3> wall_points(const io::Case& the_case, std::size_t w, double spacing, int layers) {
+  const io::WallSpec& wall = the_case.walls[w];
+  if (!wall.solid) {
+    return geometry::wall_layers(*wall.shape, spacing, layers, wall.open_faces, the_case.domain);
+  }
+  std::vector<Vec3> points = geometry::inside_layers(*wall.shape, spacing, layers, the_case.domain);
+  if (points.empty()) {
+    throw io::case_error(the_case, fmt::format("walls[{}]", w),
+                         "no lattice point lies inside this solid wall: it is thinner than about "
+                         "half a spacing; make it thicker or sph.spacing smaller");
+  }
+  return points;
+}
+
+// A warning when solid wall `w` (its particles `points`) is thinner than the kernel support 2h
+// everywhere (docs/geometry-meshes.md, "Bodies thinner than the kernel support"). Its thickness
+// is taken as 2 d + dp, d the depth of its deepest particle below the surface: exact for a slab
+// whose middle holds a lattice plane, within a spacing otherwise.
+std::optional<std::string> see_through_warning(const io::Case& the_case, const Config& config,
+                                               std::size_t w, const std::vector<Vec3>& points) {
+  const io::WallSpec& wall = the_case.walls[w];
+  if (!wall.solid)
+    return std::nullopt;
+  double depth = 0.0;
+  for (const Vec3& x : points)
+    depth = std::max(depth, -wall.shape->signed_distance(x));
+  const double spacing = config.spacing;
+  const double thickness = 2.0 * depth + spacing;
+  const double support = kernel_reach(config) * spacing;
+  if (thickness >= support - 1e-9 * spacing)
+    return std::nullopt;
+  return fmt::format(
+      "{}: walls[{}]: this solid wall is about {:.3g} m thick at its thickest, less than the "
+      "kernel support 2h = {:.3g} m: the fluid on its two sides interacts through it, so fluid "
+      "leaks across it and the loads on it come out too small; make it at least 2h thick or "
+      "sph.spacing at most {:.3g} m",
+      the_case.file, w, thickness, support, spacing * thickness / support);
+}
+
+// Tag 1 for the tracer fluid (fluid.tracer), 0 for the rest: the mixing analyses and the colour
+// of the VTK frames (field "tag").
+void tag_tracer(const FluidSpec& fluid, ParticleStore& store) {
+  if (!fluid.tracer)
+    return;
+  const TracerPlane& plane = *fluid.tracer;
+  for (std::size_t i = 0; i < store.size(); ++i) {
+    const bool tracer = (store.position()[i] - plane.point).dot(plane.normal) > 0.0;
+    store.tag()[i] = store.is_fluid(i) && tracer ? 1 : 0;
+  }
+}
+
+}  // namespace
+
+int wall_layers_for(const Config& config) {
+  if (config.wall_layers)
+    return *config.wall_layers;
+  return static_cast<int>(std::ceil(kernel_reach(config) - 1e-9));
+}
+
+std::unique_ptr<geometry::MovingBodies> generate_particles(const io::Case& the_case,
+                                                           const SphSection& section,
+                                                           ParticleStore& store,
+                                                           std::vector<std::string>& warnings) {
+  const double spacing = section.config.spacing;
+  for (const auto& region : section.fluid.regions)
+    append(store, fluid_points(the_case, spacing, region), ParticleKind::fluid);
+  const int layers = wall_layers_for(section.config);
+  auto bodies = std::make_unique<geometry::MovingBodies>(store, the_case.domain);
+  for (std::size_t w = 0; w < the_case.walls.size(); ++w) {
+    const io::WallSpec& wall = the_case.walls[w];
+    const std::size_t first = store.size();
+    const std::vector<Vec3> points = wall_points(the_case, w, spacing, layers);
+    if (auto warning = see_through_warning(the_case, section.config, w, points))
+      warnings.push_back(std::move(*warning));
+    append(store, points, ParticleKind::wall);
+    auto motion = geometry::motion_registry().create(wall.motion.type, wall.motion);
+    if (!motion) {
+      throw io::case_error(the_case, fmt::format("walls[{}].motion.type", w),
+                           "unknown motion '" + wall.motion.type + "'");
+    }
+    bodies->add_body(first, std::move(motion));
+  }
+  if (store.size() == 0)
+    throw io::case_error(the_case, "fluid.regions", "the case generates no particles");
+  check_inside_domain(the_case, store);
+  tag_tracer(section.fluid, store);
+  return bodies;
+}
+
+}  // namespace partimix::sph

@@ -1,0 +1,32 @@
+#include "sph/sph_method.hpp"
+
+#include "sph/particle_generation.hpp"
+#include "sph/wcsph_solver.hpp"
+
+namespace partimix::sph {
+
+std::shared_ptr<io::MethodSection> SphMethod::read(io::Reader& root,
+                                                   const io::Case& the_case) const {
+  return read_sph_section(root, the_case);
+}
+
+// Restoring a checkpoint replaces the particles' state, but the lattice defines their number
+// and fields, so the build is the same either way.
+io::MethodInstance SphMethod::build(const io::Case& the_case, const io::MethodSpec& spec,
+                                    const io::BuildOptions& /*options*/) const {
+  const auto& section = dynamic_cast<const SphSection&>(*spec.section);
+  io::MethodInstance instance;
+  instance.store = std::make_unique<ParticleStore>();
+  instance.bodies = generate_particles(the_case, section, *instance.store, instance.warnings);
+  try {
+    instance.solver = std::make_unique<WcsphSolver>(
+        *instance.store, the_case.domain, section.config,
+        FluidProperties{section.fluid.density, section.fluid.rheology}, the_case.gravity,
+        instance.bodies.get());
+  } catch (const InputError& error) {
+    throw io::case_error(the_case, error.location().key_path, error.message());
+  }
+  return instance;
+}
+
+}  // namespace partimix::sph

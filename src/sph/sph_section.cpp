@@ -1,0 +1,129 @@
+#include "sph/sph_section.hpp"
+
+#include <filesystem>
+
+#include "io/rheology_section.hpp"
+#include "io/shape_section.hpp"
+
+namespace partimix::sph {
+namespace {
+
+using io::at_least;
+using io::kNonNegative;
+using io::kPositive;
+using io::Reader;
+
+const std::vector<std::string> kKernels{"cubic_spline", "hyperbolic", "wendland_c2"};
+
+DensityTreatment read_density(Reader& sph_section) {
+  Reader section = sph_section.optional_map("density");
+  DensityTreatment density;
+  density.diffusion =
+      section.choice("diffusion", density.diffusion, {"none", "molteni", "fourtakas"});
+  density.delta = section.optional<double>("delta", density.delta, kNonNegative);
+  density.shepard = section.optional<bool>("shepard", density.shepard);
+  density.shepard_interval =
+      section.optional<int>("shepard_interval", density.shepard_interval, at_least(1));
+  section.done();
+  return density;
+}
+
+TimeStepFactors read_time_step(Reader& sph_section) {
+  Reader section = sph_section.optional_map("time_step");
+  TimeStepFactors factors;
+  factors.cfl = section.optional<double>("cfl", factors.cfl, kPositive);
+  factors.viscous = section.optional<double>("viscous", factors.viscous, kPositive);
+  factors.force = section.optional<double>("force", factors.force, kPositive);
+  section.done();
+  return factors;
+}
+
+std::string read_gradient_kernel(Reader& section) {
+  std::vector<std::string> allowed{"same"};
+  allowed.insert(allowed.end(), kKernels.begin(), kKernels.end());
+  const std::string name = section.choice("gradient_kernel", "same", allowed);
+  return name == "same" ? std::string() : name;
+}
+
+Config read_config(Reader& root) {
+  Reader section = root.map("sph");
+  Config config;
+  config.spacing = section.required<double>("spacing", kPositive);
+  config.smoothing_ratio =
+      section.optional<double>("smoothing_ratio", config.smoothing_ratio, kPositive);
+  config.kernel = section.choice("kernel", config.kernel, kKernels);
+  config.gradient_kernel = read_gradient_kernel(section);
+  config.equation_of_state =
+      section.choice("equation_of_state", config.equation_of_state, {"tait", "linear"});
+  config.tait_gamma = section.optional<double>("tait_gamma", config.tait_gamma, kPositive);
+  config.sound_speed = section.automatic<double>("sound_speed", kPositive);
+  config.max_velocity = section.automatic<double>("max_velocity", kPositive);
+  config.mach_factor = section.optional<double>("mach_factor", config.mach_factor, kPositive);
+  config.artificial_viscosity =
+      section.optional<double>("artificial_viscosity", config.artificial_viscosity, kNonNegative);
+  config.laminar_viscosity = section.optional<bool>("laminar_viscosity", config.laminar_viscosity);
+  config.viscous_operator =
+      section.choice("viscous_operator", config.viscous_operator, {"auto", "morris", "stress"});
+  config.viscosity_mean =
+      section.choice("viscosity_mean", config.viscosity_mean, {"arithmetic", "harmonic"});
+  config.corrected_velocity_gradient =
+      section.choice("velocity_gradient", "corrected", {"corrected", "plain"}) == "corrected";
+  config.density = read_density(section);
+  config.wall_layers = section.automatic<int>("wall_layers", at_least(1));
+  config.negative_wall_pressure =
+      section.optional<bool>("negative_wall_pressure", config.negative_wall_pressure);
+  config.time_step = read_time_step(section);
+  config.sort_interval = section.optional<int>("sort_interval", config.sort_interval, at_least(1));
+  section.done();
+  return config;
+}
+
+std::optional<TracerPlane> read_tracer(Reader& fluid, int dimensions) {
+  if (!fluid.contains("tracer"))
+    return std::nullopt;
+  Reader section = fluid.map("tracer");
+  TracerPlane tracer;
+  tracer.point = section.vector("point", dimensions, tracer.point);
+  tracer.normal = section.vector("normal", dimensions, tracer.normal);
+  if (tracer.normal.norm() == 0.0)
+    throw section.error("normal", "the normal must not be the zero vector");
+  section.done();
+  return tracer;
+}
+
+FluidSpec read_fluid(Reader& root, int dimensions, const std::filesystem::path& folder) {
+  Reader section = root.map("fluid");
+  FluidSpec fluid;
+  fluid.density = section.required<double>("density", kPositive);
+  fluid.rheology = io::read_fluid_rheology(section);
+  for (Reader& region : section.list("regions")) {
+    fluid.regions.push_back({io::read_shape(region, dimensions, folder)});
+    region.done();
+  }
+  fluid.tracer = read_tracer(section, dimensions);
+  section.done();
+  return fluid;
+}
+
+// SPH lays particles from each wall's shape, which a mesh that is not closed does not have.
+void require_shapes(const io::Case& the_case) {
+  for (const io::WallSpec& wall : the_case.walls) {
+    if (wall.no_shape) {
+      throw InputError(wall.no_shape->location(),
+                       wall.no_shape->message() + "; SPH lays wall particles from a closed mesh");
+    }
+  }
+}
+
+}  // namespace
+
+std::shared_ptr<SphSection> read_sph_section(Reader& root, const io::Case& the_case) {
+  require_shapes(the_case);
+  auto section = std::make_shared<SphSection>();
+  section->config = read_config(root);
+  const std::filesystem::path folder = std::filesystem::path(the_case.file).parent_path();
+  section->fluid = read_fluid(root, the_case.domain.dimensions, folder);
+  return section;
+}
+
+}  // namespace partimix::sph

@@ -1,0 +1,48 @@
+#pragma once
+// The case sections of the SPH method (docs/case-reference.md, "sph" and "fluid"): the solver's
+// settings, and the fluid's properties, the regions it starts in and its tracer.
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "geometry/shape.hpp"
+#include "io/case.hpp"
+#include "io/yaml_reader.hpp"
+#include "materials/rheology.hpp"
+#include "sph/config.hpp"
+
+namespace partimix::sph {
+
+struct FluidRegion {
+  std::shared_ptr<const geometry::Shape> shape;
+};
+
+// The tracer of the mixing analyses: the fluid on the side of a plane the normal points to, at
+// t = 0, gets tag 1 (the rest tag 0): (x - point) . normal > 0.
+struct TracerPlane {
+  Vec3 point = Vec3::Zero();
+  Vec3 normal = -Vec3::UnitY();  // the seed: the fluid at y < 0
+};
+
+struct FluidSpec {
+  double density = 1000.0;             // rho0 [kg/m^3]
+  materials::RheologyConfig rheology;  // from `viscosity` (newtonian) or the `rheology` map
+  std::vector<FluidRegion> regions;
+  std::optional<TracerPlane> tracer;
+};
+
+class SphSection final : public io::MethodSection {
+ public:
+  Config config;
+  FluidSpec fluid;
+
+  bool has_tracer() const override { return fluid.tracer.has_value(); }
+  std::optional<materials::FlowScales> flow_scales() const override {
+    return materials::flow_scales(fluid.density, fluid.rheology);
+  }
+};
+
+// Reads `sph` and `fluid` from the root of a case file.
+std::shared_ptr<SphSection> read_sph_section(io::Reader& root, const io::Case& the_case);
+
+}  // namespace partimix::sph
