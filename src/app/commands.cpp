@@ -50,17 +50,22 @@ int exit_code_of(const std::string& status) {
   return kExitRunFailed;
 }
 
+struct Checkpoint {
+  StateArchive state;
+  std::filesystem::path file;
+};
+
 // The checkpoint to resume from: the newest readable one in the folder, of this case.
-std::optional<StateArchive> checkpoint_to_resume(const RunArguments& arguments,
-                                                 const io::Case& the_case) {
+std::optional<Checkpoint> checkpoint_to_resume(const RunArguments& arguments,
+                                               const io::Case& the_case) {
   if (arguments.resume_dir.empty())
     return std::nullopt;
   const io::CheckpointFolder folder(arguments.resume_dir / "checkpoints");
-  std::filesystem::path used;
-  StateArchive checkpoint = folder.read_latest(&used);
-  check_checkpoint_matches(the_case, checkpoint, used);
-  folder.remove_newer_than(used);
-  fmt::print(stderr, "resuming from {}\n", used.string());
+  Checkpoint checkpoint;
+  checkpoint.state = folder.read_latest(&checkpoint.file);
+  check_checkpoint_matches(the_case, checkpoint.state, checkpoint.file);
+  folder.remove_newer_than(checkpoint.file);
+  fmt::print(stderr, "resuming from {}\n", checkpoint.file.string());
   return checkpoint;
 }
 
@@ -77,7 +82,7 @@ std::filesystem::path output_dir_of(const RunArguments& arguments, const io::Cas
 int run_command(const RunArguments& arguments) {
   try {
     const io::Case the_case = io::load_case(arguments.case_file, arguments.overrides);
-    const std::optional<StateArchive> checkpoint = checkpoint_to_resume(arguments, the_case);
+    const std::optional<Checkpoint> checkpoint = checkpoint_to_resume(arguments, the_case);
     Simulation simulation = build_simulation(the_case, {checkpoint.has_value()});
     print_warnings(simulation);
     if (arguments.threads > 0)
@@ -94,9 +99,9 @@ int run_command(const RunArguments& arguments) {
     Runner runner(the_case, simulation, options);
     io::RunSummary summary;
     try {
-      summary = runner.run(checkpoint ? &*checkpoint : nullptr);
+      summary = runner.run(checkpoint ? &checkpoint->state : nullptr);
     } catch (const StateError& error) {
-      throw InputError(InputLocation{(arguments.resume_dir / "checkpoints").string(), 0, 0, ""},
+      throw InputError(InputLocation{checkpoint->file.string(), 0, 0, ""},
                        fmt::format("the checkpoint does not fit the case: {}", error.what()));
     }
     const double throughput =

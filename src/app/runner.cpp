@@ -143,12 +143,15 @@ void Runner::start_from(const StateArchive& checkpoint) {
       offset += outputs.column_count();
     }
   }
+  std::vector<std::vector<io::PvdEntry>> frames;
+  for (const MethodOutputs& outputs : outputs_)
+    frames.push_back(restore_frames(outputs.name(), checkpoint));
+  // All read: now the files go back to where the checkpoint left them.
   std::filesystem::create_directories(out / "frames");
   series_ = std::make_unique<io::SeriesWriter>(out / "series.csv", columns, rows_);
-  for (MethodOutputs& outputs : outputs_) {
-    std::vector<io::PvdEntry> entries = restore_frames(outputs.name(), checkpoint);
-    remove_frames_from(out / "frames", outputs.name(), entries.size());
-    outputs.open_frames(out, std::move(entries));
+  for (std::size_t m = 0; m < outputs_.size(); ++m) {
+    remove_frames_from(out / "frames", outputs_[m].name(), frames[m].size());
+    outputs_[m].open_frames(out, std::move(frames[m]));
   }
 }
 
