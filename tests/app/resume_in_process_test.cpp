@@ -1,0 +1,133 @@
+// Resuming in this process (docs/architecture-notes.md, "Checkpoints"), small enough for the
+// sanitizers (tests/system has the kill-and-resume runs of the program): water and grains in one
+// tank run past half time with checkpoints, then on to the end from the last checkpoint in a fresh
+// simulation, and end bit for bit as the run that went through: series.csv, every frame of both
+// methods, the collections and the figures.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include "app/runner.hpp"
+#include "app/simulation.hpp"
+#include "io/case.hpp"
+#include "io/checkpoint_folder.hpp"
+#include "support/temp_dir.hpp"
+
+namespace partimix::app {
+namespace {
+
+using test_support::read_file;
+using test_support::TempDir;
+
+std::string tank(const std::string& end) {
+  return R"(solver: [sph, dem]
+dimensions: 3
+gravity: [0, 0, -9.81]
+domain:
+  min: [-0.08, -0.08, -0.08]
+  max: [0.18, 0.18, 0.2]
+time:
+  end: )" +
+         end + R"(
+  output_interval: 0.002
+  sample_interval: 0.0005
+  checkpoint_interval: 0.001
+  dt: 2.0e-5
+walls:
+  - {shape: box, min: [0, 0, 0], max: [0.1, 0.1, 0.12], open: [z+]}
+sph:
+  spacing: 0.02
+fluid:
+  density: 1000
+  viscosity: 1.0e-3
+  regions:
+    - {shape: box, min: [0, 0, 0], max: [0.1, 0.1, 0.04]}
+  tracer: {normal: [-1, 0, 0], point: [0.05, 0, 0]}
+dem:
+  species:
+    - {name: a, density: 2500}
+    - {name: b, density: 2500}
+  fill:
+    region: {shape: box, min: [0.01, 0.01, 0.05], max: [0.09, 0.09, 0.1]}
+    count: 30
+    radius: 0.004
+    settle_time: 0
+analyses:
+  - {type: mixing, method: sph, region: box, min: [0, 0, 0], max: [0.1, 0.1, 0.05], cells: [2, 2, 1]}
+  - {type: mixing, method: dem, region: box, min: [0, 0, 0], max: [0.1, 0.1, 0.12], cells: [2, 2, 1]}
+)";
+}
+
+io::Case load(const TempDir& dir, const std::string& text) {
+  std::ofstream(dir / "case.yaml") << text;
+  return io::load_case((dir / "case.yaml").string());
+}
+
+io::RunSummary run(const io::Case& the_case, const std::filesystem::path& out,
+                   const StateArchive* checkpoint, std::map<std::string, double>* figures) {
+  Simulation simulation = build_simulation(the_case, {checkpoint != nullptr});
+  RunOptions options;
+  options.output_dir = out;
+  options.show_progress = false;
+  Runner runner(the_case, simulation, options);
+  const io::RunSummary summary = runner.run(checkpoint);
+  if (figures != nullptr)
+    *figures = runner.figures();
+  return summary;
+}
+
+TEST(ResumeInProcess, TheSecondHalfFromACheckpointIsTheRunThatWentThrough) {
+  const TempDir dir;
+  const io::Case whole = load(dir, tank("0.006"));
+  std::map<std::string, double> expected;
+  ASSERT_EQ(run(whole, dir / "whole", nullptr, &expected).status, "completed");
+
+  // Stopped at 0.0035 s: its newest checkpoint (0.003 s) lies before the step cut short to
+  // end on time, so the run from it is the one that went through.
+  const io::Case half = load(dir, tank("0.0035"));
+  ASSERT_EQ(run(half, dir / "parts", nullptr, nullptr).status, "completed");
+  std::filesystem::path used;
+  const StateArchive checkpoint =
+      io::CheckpointFolder(dir / "parts" / "checkpoints").read_latest(&used);
+  std::map<std::string, double> resumed;
+  ASSERT_EQ(run(whole, dir / "parts", &checkpoint, &resumed).status, "completed");
+
+  EXPECT_EQ(read_file(dir / "whole" / "series.csv"), read_file(dir / "parts" / "series.csv"));
+  ASSERT_EQ(expected.size(), resumed.size());
+  for (const auto& [name, value] : expected) {
+    const double again = resumed.at(name);
+    EXPECT_TRUE(value == again || (std::isnan(value) && std::isnan(again))) << name;
+  }
+  for (const std::string method : {"sph", "dem"}) {
+    EXPECT_EQ(read_file(dir / "whole" / (method + ".pvd")),
+              read_file(dir / "parts" / (method + ".pvd")));
+    for (int k = 0; k <= 3; ++k) {
+      const auto frame =
+          std::filesystem::path("frames") / (method + "_00000" + std::to_string(k) + ".vtp");
+      EXPECT_TRUE(read_file(dir / "whole" / frame) == read_file(dir / "parts" / frame)) << frame;
+    }
+  }
+}
+
+TEST(ResumeInProcess, ACheckpointOfOtherParticlesDoesNotFit) {
+  const TempDir dir;
+  const io::Case the_case = load(dir, tank("0.001"));
+  ASSERT_EQ(run(the_case, dir / "out", nullptr, nullptr).status, "completed");
+  const StateArchive checkpoint = io::CheckpointFolder(dir / "out" / "checkpoints").read_latest();
+  std::string text = tank("0.001");
+  text.replace(text.find("count: 30"), 9, "count: 31");
+  const io::Case other = load(dir, text);
+  Simulation simulation = build_simulation(other, {true});
+  RunOptions options;
+  options.output_dir = dir / "other";
+  options.show_progress = false;
+  Runner runner(other, simulation, options);
+  EXPECT_THROW(runner.run(&checkpoint), StateError);
+  EXPECT_FALSE(std::filesystem::exists(dir / "other" / "series.csv"))
+      << "a checkpoint that does not fit must not write";
+}
+
+}  // namespace
+}  // namespace partimix::app
