@@ -331,11 +331,12 @@ std::map<std::string, double> DemSolver::derived_parameters() const {
           {"contact_slots [-]", static_cast<double>(history_->capacity())}};
 }
 
-// The walls' poses are not saved: each step sets them from the time before it uses them.
+// Not saved: the walls' poses (each step sets them from the time before it uses them) and the
+// time step (the constructor derives it from the grains, which the same case makes again).
 void DemSolver::save(StateArchive& archive, const std::string& prefix) const {
   save_store(store_, archive, prefix);
   history_->save(archive, prefix + "contacts/");
-  archive.put_doubles(prefix + "clock", std::vector<double>{time_, time_step_, rayleigh_time_});
+  archive.put_scalar(prefix + "time", time_);
   archive.put_integers(prefix + "steps", std::vector<std::int64_t>{steps_, walls_frozen_ ? 1 : 0});
   archive.put_doubles(prefix + "settling", std::vector<double>{settle_time_, settle_energy_});
 }
@@ -343,14 +344,11 @@ void DemSolver::save(StateArchive& archive, const std::string& prefix) const {
 void DemSolver::restore(const StateArchive& archive, const std::string& prefix) {
   restore_store(store_, archive, prefix);
   history_->restore(archive, prefix + "contacts/");
-  const auto clock = archive.doubles(prefix + "clock");
   const auto steps = archive.integers(prefix + "steps");
   const auto settling = archive.doubles(prefix + "settling");
-  if (clock.size() != 3 || steps.size() != 2 || settling.size() != 2)
-    throw StateError(prefix + ": the clock, steps or settling entries have the wrong size");
-  time_ = clock[0];
-  time_step_ = clock[1];
-  rayleigh_time_ = clock[2];
+  if (steps.size() != 2 || settling.size() != 2)
+    throw StateError(prefix + ": the steps or settling entries have the wrong size");
+  time_ = archive.scalar(prefix + "time");
   steps_ = steps[0];
   walls_frozen_ = steps[1] != 0;
   settle_time_ = settling[0];

@@ -49,7 +49,6 @@ struct WallMaterial {
 // that every method uses in its own way: SPH lays wall particles from the shape, DEM contacts
 // the surface. Both are in the wall's frame at t = 0; the motion moves them.
 struct WallSpec {
-  std::string kind;                              // the shape's name: box, cylinder, plane, ...
   std::shared_ptr<const geometry::Shape> shape;  // null for a mesh that is not closed
   std::shared_ptr<const geometry::Surface> surface;
   std::vector<geometry::Face> open_faces;

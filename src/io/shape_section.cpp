@@ -81,15 +81,12 @@ ShapePtr read_plate(Reader& item, int dimensions) {
 // A closed triangle mesh from an STL file (docs/geometry-meshes.md), scaled, then moved by
 // `offset`.
 ShapePtr read_mesh(Reader& item, int dimensions, const std::filesystem::path& case_folder) {
-  require_3d(item, "mesh", dimensions);
-  const std::string file = item.required<std::string>("file");
-  const double scale = item.optional<double>("scale", 1.0, kPositive);
-  const Vec3 offset = item.vector("offset", 3, Vec3::Zero());
+  MeshItem mesh = read_mesh_item(item, dimensions, case_folder);
   try {
-    return std::make_shared<geometry::TriangleMesh>(
-        geometry::read_triangle_mesh((case_folder / file).string(), scale, offset));
+    return std::make_shared<geometry::TriangleMesh>(std::move(mesh.triangles), mesh.offset);
   } catch (const InputError& error) {
-    throw item.error("file", fmt::format("cannot use the mesh: {}", error.what()));
+    throw item.error("file",
+                     fmt::format("cannot use the mesh: {}: {}", mesh.file, error.message()));
   }
 }
 
@@ -130,6 +127,20 @@ ShapePtr read_cone(Reader& item, int dimensions) {
 }
 
 }  // namespace
+
+MeshItem read_mesh_item(Reader& item, int dimensions, const std::filesystem::path& case_folder) {
+  require_3d(item, "mesh", dimensions);
+  MeshItem mesh;
+  mesh.file = item.required<std::string>("file");
+  const double scale = item.optional<double>("scale", 1.0, kPositive);
+  mesh.offset = item.vector("offset", 3, Vec3::Zero());
+  try {
+    mesh.triangles = geometry::read_stl((case_folder / mesh.file).string(), scale);
+  } catch (const InputError& error) {
+    throw item.error("file", fmt::format("cannot use the mesh: {}", error.what()));
+  }
+  return mesh;
+}
 
 ShapePtr read_shape(Reader& item, int dimensions, const std::filesystem::path& case_folder) {
   const std::string shape = item.required_choice("shape", {"box", "cylinder", "plate", "mesh"});

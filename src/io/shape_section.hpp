@@ -8,6 +8,7 @@
 
 #include "core/vec.hpp"
 #include "geometry/shape.hpp"
+#include "geometry/stl_reader.hpp"
 #include "io/yaml_reader.hpp"
 
 namespace partimix::io {
@@ -23,6 +24,16 @@ std::shared_ptr<const geometry::Shape> read_shape(Reader& item, int dimensions,
 std::shared_ptr<const geometry::Shape> read_shape_of(const std::string& shape, Reader& item,
                                                      int dimensions,
                                                      const std::filesystem::path& case_folder);
+
+// The keys of a mesh item: the triangles of its STL `file` (relative to `case_folder`) times
+// `scale`, and `offset`, which the caller adds. A problem with the file is an InputError about
+// `file` that quotes the file's own error.
+struct MeshItem {
+  std::string file;
+  geometry::TriangleSoup triangles;
+  Vec3 offset = Vec3::Zero();
+};
+MeshItem read_mesh_item(Reader& item, int dimensions, const std::filesystem::path& case_folder);
 
 // Checks that `hi` exceeds `lo` on each of the first `dimensions` axes (a box, the domain); the
 // error is about the key `max`.

@@ -65,46 +65,35 @@ WallMaterial read_material(Reader& item) {
 // an open one (a shell, a vessel without a lid) only a surface, for DEM.
 void read_mesh_wall(Reader& item, WallSpec& wall, int dimensions,
                     const std::filesystem::path& folder) {
-  if (dimensions != 3)
-    throw item.error("shape", "mesh needs dimensions: 3");
-  const std::string file = item.required<std::string>("file");
-  const double scale = item.optional<double>("scale", 1.0, kPositive);
-  const Vec3 offset = item.vector("offset", 3, Vec3::Zero());
-  geometry::TriangleSoup triangles;
+  MeshItem mesh = read_mesh_item(item, dimensions, folder);
   try {
-    triangles = geometry::read_stl((folder / file).string(), scale);
+    wall.shape = std::make_shared<geometry::TriangleMesh>(mesh.triangles, mesh.offset);
   } catch (const InputError& error) {
-    throw item.error("file", fmt::format("cannot use the mesh: {}", error.what()));
-  }
-  try {
-    wall.shape = std::make_shared<geometry::TriangleMesh>(triangles, offset);
-  } catch (const InputError& error) {
-    wall.no_shape = item.error(
-        "file", fmt::format("the mesh {} is not a closed surface ({})", file, error.message()));
-    for (geometry::Triangle& t : triangles)
+    wall.no_shape = item.error("file", fmt::format("the mesh {} is not a closed surface ({})",
+                                                   mesh.file, error.message()));
+    for (geometry::Triangle& t : mesh.triangles)
       for (Vec3& corner : t.corner)
-        corner += offset;
-    wall.surface = std::make_shared<geometry::MeshShellSurface>(triangles);
+        corner += mesh.offset;
+    wall.surface = std::make_shared<geometry::MeshShellSurface>(mesh.triangles);
   }
 }
 
 WallSpec read_wall(Reader& item, int dimensions, const std::filesystem::path& folder) {
   WallSpec wall;
-  wall.kind = item.required_choice("shape", kShapes);
-  if (has_fixed_side(wall.kind)) {
+  const std::string kind = item.required_choice("shape", kShapes);
+  if (has_fixed_side(kind)) {
     for (const std::string key : {"solid", "open"}) {
       if (item.contains(key))
-        throw item.error(key,
-                         fmt::format("a {} wall has no '{}': its sides are fixed", wall.kind, key));
+        throw item.error(key, fmt::format("a {} wall has no '{}': its sides are fixed", kind, key));
     }
   }
-  if (wall.kind == "mesh")
+  if (kind == "mesh")
     read_mesh_wall(item, wall, dimensions, folder);
   else
-    wall.shape = read_shape_of(wall.kind, item, dimensions, folder);
-  wall.solid = has_fixed_side(wall.kind) ? false : item.optional<bool>("solid", false);
-  wall.open_faces = has_fixed_side(wall.kind) ? std::vector<geometry::Face>{}
-                                              : read_open_faces(item, dimensions, wall.solid);
+    wall.shape = read_shape_of(kind, item, dimensions, folder);
+  wall.solid = has_fixed_side(kind) ? false : item.optional<bool>("solid", false);
+  wall.open_faces = has_fixed_side(kind) ? std::vector<geometry::Face>{}
+                                         : read_open_faces(item, dimensions, wall.solid);
   if (wall.shape)
     wall.surface = wall.shape->make_surface(wall.solid, wall.open_faces);
   wall.motion = read_motion(item, dimensions);

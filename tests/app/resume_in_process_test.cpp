@@ -13,7 +13,7 @@
 #include "app/simulation.hpp"
 #include "io/case.hpp"
 #include "io/checkpoint_folder.hpp"
-#include "support/temp_dir.hpp"
+#include "support/case_run.hpp"
 
 namespace partimix::app {
 namespace {
@@ -60,44 +60,32 @@ analyses:
 )";
 }
 
-io::Case load(const TempDir& dir, const std::string& text) {
-  std::ofstream(dir / "case.yaml") << text;
-  return io::load_case((dir / "case.yaml").string());
-}
-
-io::RunSummary run(const io::Case& the_case, const std::filesystem::path& out,
-                   const StateArchive* checkpoint, std::map<std::string, double>* figures) {
+test_support::CaseRun run(const io::Case& the_case, const std::filesystem::path& out,
+                          const StateArchive* checkpoint = nullptr) {
   Simulation simulation = build_simulation(the_case, {checkpoint != nullptr});
-  RunOptions options;
-  options.output_dir = out;
-  options.show_progress = false;
-  Runner runner(the_case, simulation, options);
-  const io::RunSummary summary = runner.run(checkpoint);
-  if (figures != nullptr)
-    *figures = runner.figures();
-  return summary;
+  return test_support::run_simulation(the_case, simulation, out, checkpoint);
 }
 
 TEST(ResumeInProcess, TheSecondHalfFromACheckpointIsTheRunThatWentThrough) {
   const TempDir dir;
-  const io::Case whole = load(dir, tank("0.006"));
-  std::map<std::string, double> expected;
-  ASSERT_EQ(run(whole, dir / "whole", nullptr, &expected).status, "completed");
+  const io::Case whole = test_support::load_case_text(dir, tank("0.006"));
+  const test_support::CaseRun through = run(whole, dir / "whole");
+  ASSERT_EQ(through.summary.status, "completed");
 
   // Stopped at 0.0035 s: its newest checkpoint (0.003 s) lies before the step cut short to
   // end on time, so the run from it is the one that went through.
-  const io::Case half = load(dir, tank("0.0035"));
-  ASSERT_EQ(run(half, dir / "parts", nullptr, nullptr).status, "completed");
+  const io::Case half = test_support::load_case_text(dir, tank("0.0035"));
+  ASSERT_EQ(run(half, dir / "parts").summary.status, "completed");
   std::filesystem::path used;
   const StateArchive checkpoint =
       io::CheckpointFolder(dir / "parts" / "checkpoints").read_latest(&used);
-  std::map<std::string, double> resumed;
-  ASSERT_EQ(run(whole, dir / "parts", &checkpoint, &resumed).status, "completed");
+  const test_support::CaseRun resumed = run(whole, dir / "parts", &checkpoint);
+  ASSERT_EQ(resumed.summary.status, "completed");
 
   EXPECT_EQ(read_file(dir / "whole" / "series.csv"), read_file(dir / "parts" / "series.csv"));
-  ASSERT_EQ(expected.size(), resumed.size());
-  for (const auto& [name, value] : expected) {
-    const double again = resumed.at(name);
+  ASSERT_EQ(through.figures.size(), resumed.figures.size());
+  for (const auto& [name, value] : through.figures) {
+    const double again = resumed.figures.at(name);
     EXPECT_TRUE(value == again || (std::isnan(value) && std::isnan(again))) << name;
   }
   for (const std::string method : {"sph", "dem"}) {
@@ -113,18 +101,13 @@ TEST(ResumeInProcess, TheSecondHalfFromACheckpointIsTheRunThatWentThrough) {
 
 TEST(ResumeInProcess, ACheckpointOfOtherParticlesDoesNotFit) {
   const TempDir dir;
-  const io::Case the_case = load(dir, tank("0.001"));
-  ASSERT_EQ(run(the_case, dir / "out", nullptr, nullptr).status, "completed");
+  const io::Case the_case = test_support::load_case_text(dir, tank("0.001"));
+  ASSERT_EQ(run(the_case, dir / "out").summary.status, "completed");
   const StateArchive checkpoint = io::CheckpointFolder(dir / "out" / "checkpoints").read_latest();
   std::string text = tank("0.001");
   text.replace(text.find("count: 30"), 9, "count: 31");
-  const io::Case other = load(dir, text);
-  Simulation simulation = build_simulation(other, {true});
-  RunOptions options;
-  options.output_dir = dir / "other";
-  options.show_progress = false;
-  Runner runner(other, simulation, options);
-  EXPECT_THROW(runner.run(&checkpoint), StateError);
+  const io::Case other = test_support::load_case_text(dir, text);
+  EXPECT_THROW(run(other, dir / "other", &checkpoint), StateError);
   EXPECT_FALSE(std::filesystem::exists(dir / "other" / "series.csv"))
       << "a checkpoint that does not fit must not write";
 }

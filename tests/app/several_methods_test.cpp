@@ -16,7 +16,7 @@
 #include "app/simulation.hpp"
 #include "coupling/coupling.hpp"
 #include "io/case.hpp"
-#include "support/temp_dir.hpp"
+#include "support/case_run.hpp"
 
 namespace partimix::app {
 namespace {
@@ -71,12 +71,6 @@ fluid:
                                                   : "");
 }
 
-io::Case load(const TempDir& dir, const std::string& text) {
-  const auto file = dir / "case.yaml";
-  std::ofstream(file) << text;
-  return io::load_case(file.string());
-}
-
 // Watches both methods at every step of the clock and writes nothing.
 class WatchingCoupling final : public coupling::Coupling {
  public:
@@ -100,11 +94,7 @@ struct Outputs {
 };
 
 void run(const io::Case& the_case, const std::filesystem::path& out, Simulation& simulation) {
-  RunOptions options;
-  options.output_dir = out;
-  options.show_progress = false;
-  Runner runner(the_case, simulation, options);
-  ASSERT_EQ(runner.run().status, "completed");
+  ASSERT_EQ(test_support::run_simulation(the_case, simulation, out).summary.status, "completed");
 }
 
 // The column named `name` of a series.csv text, as text, one cell per row.
@@ -136,11 +126,11 @@ TEST(SeveralMethods, EachMethodIsBitwiseItsSingleRun) {
   const TempDir dir;
   Outputs alone;
   for (const std::string method : {"sph", "dem"}) {
-    const io::Case the_case = load(dir, tank_case(method, kFixedStep));
+    const io::Case the_case = test_support::load_case_text(dir, tank_case(method, kFixedStep));
     Simulation simulation = build_simulation(the_case);
     run(the_case, dir / method, simulation);
   }
-  const io::Case both = load(dir, tank_case("[sph, dem]", kFixedStep));
+  const io::Case both = test_support::load_case_text(dir, tank_case("[sph, dem]", kFixedStep));
   Simulation simulation = build_simulation(both);
   auto watching = std::make_unique<WatchingCoupling>(simulation);
   WatchingCoupling& watch = *watching;
@@ -171,11 +161,12 @@ TEST(SeveralMethods, EachMethodIsBitwiseItsSingleRun) {
 TEST(SeveralMethods, SubStepsGiveTheGrainsTheirOwnStep) {
   const TempDir dir;
   const std::string end = "0.005859375";
-  const io::Case alone = load(dir, tank_case("dem", "  dt: 1.52587890625e-05\n", end));
+  const io::Case alone =
+      test_support::load_case_text(dir, tank_case("dem", "  dt: 1.52587890625e-05\n", end));
   Simulation dem_alone = build_simulation(alone);
   run(alone, dir / "alone", dem_alone);
-  const io::Case both =
-      load(dir, tank_case("[sph, dem]", "  dt: 6.103515625e-05\n  sub_steps: {dem: 4}\n", end));
+  const io::Case both = test_support::load_case_text(
+      dir, tank_case("[sph, dem]", "  dt: 6.103515625e-05\n  sub_steps: {dem: 4}\n", end));
   Simulation simulation = build_simulation(both);
   run(both, dir / "both", simulation);
   const ParticleStore& a = *dem_alone.methods[0].store;
@@ -189,13 +180,11 @@ TEST(SeveralMethods, SubStepsGiveTheGrainsTheirOwnStep) {
 
 TEST(SeveralMethods, AFixedStepAboveAMethodsStableStepFailsTheRun) {
   const TempDir dir;
-  const io::Case the_case = load(dir, tank_case("[sph, dem]", "  dt: 1.0e-3\n"));
+  const io::Case the_case =
+      test_support::load_case_text(dir, tank_case("[sph, dem]", "  dt: 1.0e-3\n"));
   Simulation simulation = build_simulation(the_case);
-  RunOptions options;
-  options.output_dir = dir / "out";
-  options.show_progress = false;
-  Runner runner(the_case, simulation, options);
-  const io::RunSummary summary = runner.run();
+  const io::RunSummary summary =
+      test_support::run_simulation(the_case, simulation, dir / "out").summary;
   EXPECT_EQ(summary.status, "failed");
   EXPECT_NE(summary.message.find("time.dt = 0.001 s exceeds the stable step of method sph"),
             std::string::npos)

@@ -1,11 +1,15 @@
 #pragma once
-// Building and running a case in this process into a temporary output folder, for tests that
-// need the run's summary and its figures (the analyses' time averages and final values).
+// Building and running a case in this process, for tests that need the run's summary and its
+// figures (the analyses' time averages and final values): from a case file's text, into a
+// folder of the test's or a temporary one, fresh or from a checkpoint.
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <string>
 
 #include "app/runner.hpp"
 #include "app/simulation.hpp"
+#include "core/state_archive.hpp"
 #include "io/case.hpp"
 #include "io/run_metadata.hpp"
 #include "support/temp_dir.hpp"
@@ -17,17 +21,31 @@ struct CaseRun {
   std::map<std::string, double> figures;
 };
 
-inline CaseRun run_case(const io::Case& the_case) {
-  app::Simulation simulation = app::build_simulation(the_case);
-  const TempDir out("case_run");
+// Writes `text` to `dir`/case.yaml and loads it.
+inline io::Case load_case_text(const TempDir& dir, const std::string& text) {
+  std::ofstream(dir / "case.yaml") << text;
+  return io::load_case((dir / "case.yaml").string());
+}
+
+// Runs `simulation` (built from `the_case`) with its outputs in `out`, from `checkpoint` when
+// one is given (the simulation then built with for_restore).
+inline CaseRun run_simulation(const io::Case& the_case, app::Simulation& simulation,
+                              const std::filesystem::path& out,
+                              const StateArchive* checkpoint = nullptr) {
   app::RunOptions options;
-  options.output_dir = out.path();
+  options.output_dir = out;
   options.show_progress = false;
   app::Runner runner(the_case, simulation, options);
   CaseRun run;
-  run.summary = runner.run();
+  run.summary = runner.run(checkpoint);
   run.figures = runner.figures();
   return run;
+}
+
+inline CaseRun run_case(const io::Case& the_case) {
+  app::Simulation simulation = app::build_simulation(the_case);
+  const TempDir out("case_run");
+  return run_simulation(the_case, simulation, out.path());
 }
 
 }  // namespace partimix::test_support

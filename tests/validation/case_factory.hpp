@@ -22,7 +22,6 @@ inline sph::SphSection& sph_of(io::Case& c) {
 // A container wall: the box [lo, hi] with `open` faces.
 inline io::WallSpec box_wall(const Vec3& lo, const Vec3& hi, std::vector<geometry::Face> open) {
   io::WallSpec wall;
-  wall.kind = "box";
   wall.shape = std::make_shared<geometry::Box>(lo, hi);
   wall.surface = wall.shape->make_surface(false, open);
   wall.open_faces = std::move(open);
