@@ -133,6 +133,15 @@ def save(plt, figure, path, dpi):
     plt.close(figure)
 
 
+def record_outputs(outdir, paths):
+    """Lists the plots in the folder's manifest (src/app/output_folder.hpp), so that the next
+    run into the folder removes them and nothing else of the user's."""
+    with open(outdir / ".partimix-files", "a", encoding="utf-8") as manifest:
+        manifest.write("plots\n")
+        for path in paths:
+            manifest.write(f"{path.relative_to(outdir)}\n")
+
+
 def main(argv):
     parser = argparse.ArgumentParser(description="Plot OUTDIR/series.csv into OUTDIR/plots.")
     parser.add_argument("outdir", type=Path, help="a partimix output folder")
@@ -148,6 +157,7 @@ def main(argv):
         print(f"plot_series: {error}; install matplotlib and numpy for {sys.executable} "
               "(Debian: python3-matplotlib python3-numpy)", file=sys.stderr)
         return EXIT_FAILED
+    record_outputs(args.outdir, written)
     print(f"plot_series: wrote {len(written)} plots to {args.outdir / 'plots'}")
     return 0
 

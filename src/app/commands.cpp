@@ -3,16 +3,18 @@
 #include <omp.h>
 
 #include <cstdio>
-#include <cstdlib>
 #include <optional>
-
-#include <sys/wait.h>
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include "app/checkpoint_match.hpp"
+#include "app/child_process.hpp"
+#include "app/console_monitor.hpp"
 #include "app/interrupt.hpp"
+#include "app/method_outputs.hpp"
+#include "app/output_folder.hpp"
+#include "app/preflight.hpp"
 #include "app/runner.hpp"
 #include "app/simulation.hpp"
 #include "app/tools_dir.hpp"
@@ -40,6 +42,25 @@ void print_warnings(const Simulation& simulation) {
 void print_figures(const std::map<std::string, double>& figures) {
   for (const auto& [name, value] : figures)
     fmt::print(stderr, "  {:<24} {:.6g}\n", name, value);
+}
+
+void print_summary(const io::RunSummary& summary) {
+  const double throughput =
+      summary.wall_seconds > 0.0
+          ? static_cast<double>(summary.particles * summary.steps) / summary.wall_seconds
+          : 0.0;
+  fmt::print(stderr, "{}: {} steps to t = {:.6g} s in {:.1f} s ({:.3g} particle-steps/s)\n",
+             summary.status, summary.steps, summary.simulated_time, summary.wall_seconds,
+             throughput);
+  if (!summary.message.empty())
+    fmt::print(stderr, "{}\n", summary.message);
+}
+
+void print_estimate(const RunEstimate& estimate) {
+  fmt::print(stderr, "  {:<24} {:.6g}\n", "first_time_step [s]", estimate.first_dt);
+  fmt::print(stderr, "  {:<24} {:.3g}\n", "steps (estimate)", estimate.steps);
+  fmt::print(stderr, "  {:<24} {:.3g}\n", "series rows", estimate.series_rows);
+  fmt::print(stderr, "  {:<24} {:.3g}\n", "frames", estimate.frames);
 }
 
 int exit_code_of(const std::string& status) {
@@ -80,23 +101,30 @@ std::filesystem::path output_dir_of(const RunArguments& arguments, const io::Cas
 }  // namespace
 
 int run_command(const RunArguments& arguments) {
+  install_interrupt_handler();
+  ConsoleMonitor monitor(stderr);
   try {
     const io::Case the_case = io::load_case(arguments.case_file, arguments.overrides);
-    const std::optional<Checkpoint> checkpoint = checkpoint_to_resume(arguments, the_case);
-    Simulation simulation = build_simulation(the_case, {checkpoint.has_value()});
-    print_warnings(simulation);
-    if (arguments.threads > 0)
-      omp_set_num_threads(arguments.threads);
     RunOptions options;
     options.output_dir = output_dir_of(arguments, the_case);
+    options.overwrite = arguments.overwrite;
+    if (arguments.resume_dir.empty())
+      check_output_folder(options.output_dir, options.overwrite);
+    const std::optional<Checkpoint> checkpoint = checkpoint_to_resume(arguments, the_case);
+    Simulation simulation =
+        build_simulation(the_case, {checkpoint.has_value(), arguments.quiet ? nullptr : &monitor});
+    monitor.finish();
+    print_warnings(simulation);
+    estimate_run(the_case, simulation);
+    if (arguments.threads > 0)
+      omp_set_num_threads(arguments.threads);
     options.threads = omp_get_max_threads();
     options.show_progress = !arguments.quiet;
+    Runner runner(the_case, simulation, options);
     fmt::print(stderr, "partimix {}: {} ({} particles, {} threads) -> {}\n", PARTIMIX_VERSION,
                the_case.name, simulation.particle_count(), options.threads,
                options.output_dir.string());
     print_parameters(simulation, the_case);
-    install_interrupt_handler();
-    Runner runner(the_case, simulation, options);
     io::RunSummary summary;
     try {
       summary = runner.run(checkpoint ? &checkpoint->state : nullptr);
@@ -104,48 +132,62 @@ int run_command(const RunArguments& arguments) {
       throw InputError(InputLocation{checkpoint->file.string(), 0, 0, ""},
                        fmt::format("the checkpoint does not fit the case: {}", error.what()));
     }
-    const double throughput =
-        summary.wall_seconds > 0.0
-            ? static_cast<double>(summary.particles * summary.steps) / summary.wall_seconds
-            : 0.0;
-    fmt::print(stderr, "{}: {} steps to t = {:.6g} s in {:.1f} s ({:.3g} particle-steps/s)\n",
-               summary.status, summary.steps, summary.simulated_time, summary.wall_seconds,
-               throughput);
-    if (!summary.message.empty())
-      fmt::print(stderr, "{}\n", summary.message);
+    print_summary(summary);
     print_figures(runner.figures());
     return exit_code_of(summary.status);
   } catch (const InputError& error) {
+    monitor.finish();
     fmt::print(stderr, "error: {}\n", error.what());
     return kExitBadInput;
   } catch (const RunError& error) {
     fmt::print(stderr, "run failed: {}\n", error.what());
     return kExitRunFailed;
+  } catch (const Interrupted& error) {
+    monitor.finish();
+    fmt::print(stderr, "{}; nothing was written\n", error.what());
+    return kExitInterrupted;
   }
 }
 
+// Loads and builds the case as `run` would (settling grains included), checks its analyses
+// and output columns, estimates the run and takes its first step; writes nothing.
 int check_command(const std::string& case_file, const std::vector<std::string>& overrides) {
+  install_interrupt_handler();
+  ConsoleMonitor monitor(stderr);
   try {
     const io::Case the_case = io::load_case(case_file, overrides);
-    const Simulation simulation = build_simulation(the_case);
+    Simulation simulation = build_simulation(the_case, {false, &monitor});
+    monitor.finish();
     print_warnings(simulation);
+    for (std::size_t m = 0; m < simulation.methods.size(); ++m)
+      MethodOutputs(the_case, m, simulation.methods[m]);
+    const RunEstimate estimate = estimate_run(the_case, simulation);
+    take_first_step(the_case, simulation, estimate.first_dt);
     fmt::print(stderr, "{}: valid ({} particles)\n", case_file, simulation.particle_count());
     print_parameters(simulation, the_case);
+    print_estimate(estimate);
     return kExitSuccess;
   } catch (const InputError& error) {
+    monitor.finish();
     fmt::print(stderr, "error: {}\n", error.what());
     return kExitBadInput;
+  } catch (const Interrupted& error) {
+    monitor.finish();
+    fmt::print(stderr, "{}\n", error.what());
+    return kExitInterrupted;
   }
 }
 
+// The plot script is started with an argument vector, never through a shell: the folder's name
+// reaches it as one argument whatever characters it holds.
 int plot_command(const std::filesystem::path& output_dir) {
   const std::filesystem::path script = tools_dir() / "plot_series.py";
-  const std::string command =
-      fmt::format("/usr/bin/python3 '{}' '{}'", script.string(), output_dir.string());
-  const int status = std::system(command.c_str());
-  if (status == -1)
+  try {
+    return wait_process(start_process({"/usr/bin/python3", script.string(), output_dir.string()}));
+  } catch (const RunError& error) {
+    fmt::print(stderr, "plot failed: {}\n", error.what());
     return kExitRunFailed;
-  return WEXITSTATUS(status);
+  }
 }
 
 }  // namespace partimix::app

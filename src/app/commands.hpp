@@ -12,6 +12,7 @@ struct RunArguments {
   std::vector<std::string> overrides;
   int threads = 0;  // 0: all cores
   bool quiet = false;
+  bool overwrite = false;            // write into a folder that holds files partimix did not write
   std::filesystem::path resume_dir;  // non-empty: resume the run in this folder (and write there)
 };
 

@@ -15,6 +15,7 @@ extern "C" void on_interrupt(int) {
 
 void install_interrupt_handler() {
   std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
 }
 
 bool interrupt_requested() {

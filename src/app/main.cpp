@@ -17,8 +17,10 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--out,-o", run.output_dir, "Output folder (default: out/<case name>)");
   run_cmd->add_option("--set,-s", run.overrides, "Override a case key: key.path=value");
   run_cmd->add_option("--threads,-t", run.threads, "OpenMP threads (default: all cores)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1, 4096));
   run_cmd->add_flag("--quiet,-q", run.quiet, "No progress line");
+  run_cmd->add_flag("--overwrite", run.overwrite,
+                    "Write into an output folder that holds files partimix did not write");
   run_cmd
       ->add_option("--resume", run.resume_dir,
                    "Resume the run in this output folder from its newest checkpoint")
@@ -38,9 +40,11 @@ int main(int argc, char** argv) {
   sweep_cmd->add_option("--set,-s", sweep.overrides, "Override a case key in every run");
   sweep_cmd->add_option("--out,-o", sweep.output_dir, "Sweep folder (default: out/<name>_sweep)");
   sweep_cmd->add_option("--jobs,-j", sweep.jobs, "Runs at a time (default: 1)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1, 4096));
   sweep_cmd->add_option("--threads,-t", sweep.threads, "Threads per run (default: cores / jobs)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1, 4096));
+  sweep_cmd->add_flag("--overwrite", sweep.overwrite,
+                      "Write into a sweep folder that holds files partimix did not write");
 
   std::string plot_dir;
   CLI::App* plot_cmd = cli.add_subcommand("plot", "Plot series.csv of an output folder to PNG");

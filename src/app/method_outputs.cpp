@@ -1,5 +1,7 @@
 #include "app/method_outputs.hpp"
 
+#include <map>
+
 #include <fmt/format.h>
 
 #include "analysis/kinetic_energy.hpp"
@@ -24,8 +26,10 @@ analysis::AnalysisOptions options_of(const io::AnalysisSpec& spec, const io::Cas
   options.repose = spec.repose;
   if (spec.type == "body_loads" || spec.type == "power_number") {
     if (bodies == nullptr || static_cast<std::size_t>(spec.body) >= bodies->count()) {
-      throw RunError(fmt::format("the analysis '{}' needs the bodies of method {}, which has none",
-                                 spec.type, spec.method));
+      throw InputError(the_case.locate(spec.key + ".body"),
+                       fmt::format("the analysis '{}' needs wall {} as a body of method {}, "
+                                   "which has no such body",
+                                   spec.type, spec.body, spec.method));
     }
     const auto body = static_cast<std::size_t>(spec.body);
     options.body = {spec.body, &bodies->motion(body), the_case.walls[body].motion,
@@ -43,12 +47,30 @@ MethodOutputs::MethodOutputs(const io::Case& the_case, std::size_t m,
     : name_(the_case.methods[m].name), method_(method) {
   analyses_.push_back(std::make_unique<analysis::KineticEnergy>(*method.store));
   analyses_.push_back(std::make_unique<analysis::MaxSpeed>());
+  prefixes_.assign(2, "");
+  std::map<std::string, std::string> writer_of;  // column -> key of the analysis writing it
+  const auto claim = [&](const std::string& key, const analysis::Analysis& a,
+                         const std::string& prefix) {
+    for (const analysis::Column& column : a.columns()) {
+      const auto [at, fresh] = writer_of.emplace(prefix + column.name, key);
+      if (!fresh) {
+        throw InputError(the_case.locate(key),
+                         fmt::format("its series column '{}' is already written by {}; give "
+                                     "the analyses distinct `name`s",
+                                     at->first, at->second));
+      }
+    }
+  };
+  for (std::size_t k = 0; k < analyses_.size(); ++k)
+    claim("the built-in analyses", *analyses_[k], "");
   const io::MethodSection& section = *the_case.methods[m].section;
   for (const io::AnalysisSpec& spec : the_case.analyses) {
     if (spec.method != name_)
       continue;
     analyses_.push_back(analysis::analysis_registry().create(
         spec.type, options_of(spec, the_case, section, method.bodies.get())));
+    prefixes_.push_back(spec.name.empty() ? "" : spec.name + ".");
+    claim(spec.key, *analyses_.back(), prefixes_.back());
   }
   for (const auto& a : analyses_) {
     column_count_ += a->columns().size();
@@ -58,10 +80,9 @@ MethodOutputs::MethodOutputs(const io::Case& the_case, std::size_t m,
 
 std::vector<analysis::Column> MethodOutputs::columns(bool prefixed) const {
   std::vector<analysis::Column> columns;
-  for (const auto& a : analyses_) {
-    for (analysis::Column column : a->columns()) {
-      if (prefixed)
-        column.name = name_ + "." + column.name;
+  for (std::size_t k = 0; k < analyses_.size(); ++k) {
+    for (analysis::Column column : analyses_[k]->columns()) {
+      column.name = (prefixed ? name_ + "." : "") + prefixes_[k] + column.name;
       columns.push_back(std::move(column));
     }
   }
@@ -89,11 +110,12 @@ void MethodOutputs::replay(double time, std::span<const double> values) {
 }
 
 void MethodOutputs::add_figures(std::map<std::string, double>& figures, bool prefixed) const {
-  std::map<std::string, double> own;
-  for (const auto& a : analyses_)
-    a->add_figures(own);
-  for (const auto& [figure, value] : own)
-    figures[prefixed ? name_ + "." + figure : figure] = value;
+  for (std::size_t k = 0; k < analyses_.size(); ++k) {
+    std::map<std::string, double> own;
+    analyses_[k]->add_figures(own);
+    for (const auto& [figure, value] : own)
+      figures[(prefixed ? name_ + "." : "") + prefixes_[k] + figure] = value;
+  }
 }
 
 void MethodOutputs::open_frames(const std::filesystem::path& output_dir,
@@ -101,11 +123,12 @@ void MethodOutputs::open_frames(const std::filesystem::path& output_dir,
   collection_ = std::make_unique<io::PvdWriter>(output_dir / collection_name(), std::move(entries));
 }
 
-void MethodOutputs::write_frame(const std::filesystem::path& output_dir, double time) {
+std::string MethodOutputs::write_frame(const std::filesystem::path& output_dir, double time) {
   const std::string file =
       fmt::format("frames/{}_{:06d}.vtp", name_, collection_->entries().size());
   io::write_vtp_frame(output_dir / file, *method_.store, time);
   collection_->add(time, file);
+  return file;
 }
 
 }  // namespace partimix::app

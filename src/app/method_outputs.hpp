@@ -18,12 +18,14 @@ namespace partimix::app {
 class MethodOutputs {
  public:
   // The analyses of method `m` of the case (kinetic energy and the largest speed, then the
-  // case's analyses of this method, in case order). Throws RunError when an analysis needs
-  // what the method does not have (bodies).
+  // case's analyses of this method, in case order). Throws InputError at the analysis' key
+  // when it needs what the method does not have (bodies) or when two analyses would write the
+  // same column (two power numbers without distinct `name`s).
   MethodOutputs(const io::Case& the_case, std::size_t m, const io::MethodInstance& method);
 
   const std::string& name() const { return name_; }
-  // The series columns of the analyses, prefixed with "<method>." when `prefixed`.
+  // The series columns of the analyses, each named "<analysis name>.<column>" when the analysis
+  // has a name, and prefixed with "<method>." when `prefixed`.
   std::vector<analysis::Column> columns(bool prefixed) const;
   std::size_t column_count() const { return column_count_; }
 
@@ -35,7 +37,8 @@ class MethodOutputs {
 
   // The frame series: starts the collection afresh, or with the frames before a checkpoint.
   void open_frames(const std::filesystem::path& output_dir, std::vector<io::PvdEntry> entries);
-  void write_frame(const std::filesystem::path& output_dir, double time);
+  // Writes the frame at `time` and returns its path relative to output_dir.
+  std::string write_frame(const std::filesystem::path& output_dir, double time);
   const std::vector<io::PvdEntry>& frames() const { return collection_->entries(); }
   std::string collection_name() const { return name_ + ".pvd"; }
 
@@ -43,6 +46,7 @@ class MethodOutputs {
   std::string name_;
   const io::MethodInstance& method_;
   std::vector<std::unique_ptr<analysis::Analysis>> analyses_;
+  std::vector<std::string> prefixes_;  // parallel to analyses_: "<name>." or empty
   std::size_t column_count_ = 0;
   bool needs_body_forces_ = false;
   std::unique_ptr<io::PvdWriter> collection_;

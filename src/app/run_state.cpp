@@ -1,8 +1,16 @@
 #include "app/run_state.hpp"
 
+#include <cmath>
+#include <limits>
 #include <vector>
 
 namespace partimix::app {
+
+double next_multiple(double interval, double time, double tolerance) {
+  const double after = time + tolerance;
+  const double next = interval * (std::floor(after / interval) + 1.0);
+  return next > after ? next : std::nextafter(after, std::numeric_limits<double>::infinity());
+}
 namespace {
 
 constexpr const char* kTimes = "run/times";

@@ -21,6 +21,11 @@ struct RunState {
   double wall_seconds = 0.0;  // spent by the run before this process (a resumed run) [s]
 };
 
+// The first whole multiple of `interval` past `time` + `tolerance`, in one step whatever the
+// ratio of the two (no loop that a tiny interval could stall): the next sample, frame or
+// checkpoint time. Always later than `time`.
+double next_multiple(double interval, double time, double tolerance);
+
 // Under "run/".
 void save_run_state(const RunState& state, StateArchive& archive);
 RunState restore_run_state(const StateArchive& archive);

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "app/interrupt.hpp"
+#include "app/output_folder.hpp"
 #include "core/error.hpp"
 #include "core/progress.hpp"
 #include "core/stopwatch.hpp"
@@ -92,22 +93,19 @@ std::vector<io::SeriesColumn> Runner::series_columns() const {
   return columns;
 }
 
-// Removes what an earlier run left in the folder, so that no stale frame or checkpoint mixes in.
+// Clears what an earlier run wrote in the folder (app/output_folder.hpp), so that no stale
+// frame or checkpoint mixes in, and lists what this run writes.
 void Runner::start_fresh() {
   namespace fs = std::filesystem;
   const fs::path& out = options_.output_dir;
-  std::vector<std::string> products{"frames",   "plots",         "series.csv",
-                                    "run.json", "particles.pvd", kCheckpoints};
+  prepare_output_folder(out, options_.overwrite);
+  std::vector<std::string> products{"series.csv", "run.json", "frames", kCheckpoints};
   for (const MethodOutputs& outputs : outputs_)
     products.push_back(outputs.collection_name());
+  for (const std::string& product : products)
+    record_output(out, product);
   std::error_code error;
-  for (const std::string& product : products) {
-    fs::remove_all(out / product, error);
-    if (error)
-      break;
-  }
-  if (!error)
-    fs::create_directories(out / "frames", error);
+  fs::create_directories(out / "frames", error);
   if (error) {
     throw RunError(
         fmt::format("cannot prepare the output folder {}: {}", out.string(), error.message()));
@@ -169,13 +167,15 @@ void Runner::sample(double time, std::uint64_t steps, double dt) {
 
 void Runner::write_frames(double time) {
   for (MethodOutputs& outputs : outputs_)
-    outputs.write_frame(options_.output_dir, time);
+    record_output(options_.output_dir, outputs.write_frame(options_.output_dir, time));
   state_.last_frame_time = time;
 }
 
 // Everything the run needs to go on (docs/architecture-notes.md, "Checkpoints"), in
 // checkpoints/checkpoint_<step>.h5; the last two are kept.
 void Runner::write_checkpoint() {
+  const double before = state_.wall_seconds;
+  state_.wall_seconds = wall_seconds();
   StateArchive archive;
   archive.put_text("case/file", case_.file);
   archive.put_text("case/resolved", case_.resolved.dump());
@@ -189,8 +189,11 @@ void Runner::write_checkpoint() {
   }
   for (std::size_t c = 0; c < simulation_.couplings.size(); ++c)
     simulation_.couplings[c]->save(archive, fmt::format("couplings/{}/", c));
+  state_.wall_seconds = before;
   const io::CheckpointFolder folder(options_.output_dir / kCheckpoints);
   last_checkpoint_ = folder.write(state_.steps, archive);
+  record_output(options_.output_dir,
+                last_checkpoint_.lexically_relative(options_.output_dir).string());
 }
 
 void Runner::write_metadata(const io::RunSummary& summary) const {
@@ -252,63 +255,83 @@ io::RunSummary Runner::run(const StateArchive* checkpoint) {
     start_from(*checkpoint);
   else
     start_fresh();
-  const io::TimeControl& time = case_.time;
-  const std::size_t particles = simulation_.particle_count();
-  io::RunSummary summary{"running", "", particles, 0, 0.0, 0.0, options_.threads};
-  write_metadata(summary);
+  io::RunSummary summary{"running",       "", simulation_.particle_count(), 0, 0.0, 0.0,
+                         options_.threads};
+  wall_.restart();
+  write_progress(summary);
   std::optional<Progress> progress;
   if (options_.show_progress)
-    progress.emplace(time.end, stderr, isatty(fileno(stderr)) != 0);
-  Stopwatch wall;
-  const double tolerance = 1e-9 * time.end;
-  if (checkpoint == nullptr) {
-    sample(0.0, 0, 0.0);
-    if (case_.output.frames)
-      write_frames(0.0);
+    progress.emplace(case_.time.end, stderr, isatty(fileno(stderr)) != 0);
+  try {
+    if (checkpoint == nullptr) {
+      sample(0.0, 0, 0.0);
+      if (case_.output.frames)
+        write_frames(0.0);
+    }
+    summary.status = "completed";
+    loop(summary, progress);
+  } catch (const RunError& error) {
+    summary.status = "failed";
+    summary.message =
+        fmt::format("step {}, t = {:.6g} s: {}", state_.steps, state_.time, error.what());
   }
-  summary.status = "completed";
+  if (progress)
+    progress->finish();
+  finish(summary);
+  return summary;
+}
+
+// Steps until the end time, an interrupt or a failure (summary says which), sampling, writing
+// frames and checkpoints on the way; run.json follows every frame and checkpoint.
+void Runner::loop(io::RunSummary& summary, std::optional<Progress>& progress) {
+  const io::TimeControl& time = case_.time;
+  const double tolerance = 1e-9 * time.end;
   while (state_.time < time.end - tolerance) {
     if (interrupt_requested()) {
       summary.status = "interrupted";
       summary.message =
           fmt::format("interrupted at step {}, t = {:.6g} s", state_.steps, state_.time);
       write_checkpoint();
-      break;
+      return;
     }
     if (!step_once(summary))
-      break;
+      return;
     const double t = state_.time;
+    bool written = false;
     if (t >= state_.next_sample - tolerance) {
       sample(t, state_.steps, state_.last_dt);
-      while (state_.next_sample <= t + tolerance)
-        state_.next_sample += time.sample_interval;
+      state_.next_sample = next_multiple(time.sample_interval, t, tolerance);
     }
     if (case_.output.frames && t >= state_.next_frame - tolerance) {
       write_frames(t);
-      while (state_.next_frame <= t + tolerance)
-        state_.next_frame += time.output_interval;
+      state_.next_frame = next_multiple(time.output_interval, t, tolerance);
+      written = true;
     }
     if (time.checkpoint_interval > 0.0 && t >= state_.next_checkpoint - tolerance) {
-      while (state_.next_checkpoint <= t + tolerance)
-        state_.next_checkpoint += time.checkpoint_interval;
-      state_.wall_seconds += wall.seconds();
-      wall.restart();
+      state_.next_checkpoint = next_multiple(time.checkpoint_interval, t, tolerance);
       write_checkpoint();
-      summary.steps = state_.steps;
-      summary.simulated_time = t;
-      summary.wall_seconds = state_.wall_seconds;
-      summary.status = "running";
-      write_metadata(summary);
-      summary.status = "completed";
+      written = true;
     }
+    if (written)
+      write_progress(summary);
     if (progress)
-      progress->update(t, state_.steps, particles);
+      progress->update(t, state_.steps, summary.particles);
   }
-  if (progress)
-    progress->finish();
-  state_.wall_seconds += wall.seconds();
-  finish(summary);
-  return summary;
+}
+
+// run.json of a run under way: status "running", the steps and time so far.
+void Runner::write_progress(const io::RunSummary& summary) {
+  io::RunSummary now = summary;
+  now.status = "running";
+  now.steps = state_.steps;
+  now.simulated_time = state_.time;
+  now.wall_seconds = wall_seconds();
+  write_metadata(now);
+}
+
+// The wall time of the run so far, this process and those before it (a resumed run).
+double Runner::wall_seconds() const {
+  return state_.wall_seconds + wall_.seconds();
 }
 
 // The last sample and frame at the time the run stopped (unless it failed), the figures and
@@ -322,7 +345,7 @@ void Runner::finish(io::RunSummary& summary) {
   }
   summary.steps = state_.steps;
   summary.simulated_time = state_.time;
-  summary.wall_seconds = state_.wall_seconds;
+  summary.wall_seconds = wall_seconds();
   for (const MethodOutputs& outputs : outputs_)
     outputs.add_figures(figures_, !case_.single_method());
   write_metadata(summary);

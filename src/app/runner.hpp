@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,7 +15,9 @@
 #include "app/run_clock.hpp"
 #include "app/run_state.hpp"
 #include "app/simulation.hpp"
+#include "core/progress.hpp"
 #include "core/state_archive.hpp"
+#include "core/stopwatch.hpp"
 #include "io/case.hpp"
 #include "io/run_metadata.hpp"
 #include "io/series_writer.hpp"
@@ -25,6 +28,7 @@ struct RunOptions {
   std::filesystem::path output_dir;
   int threads = 1;
   bool show_progress = true;
+  bool overwrite = false;  // write into a folder with files partimix did not write
 };
 
 class Runner {
@@ -52,6 +56,9 @@ class Runner {
   void write_metadata(const io::RunSummary& summary) const;
   std::vector<io::SeriesColumn> series_columns() const;
   bool step_once(io::RunSummary& summary);
+  void loop(io::RunSummary& summary, std::optional<Progress>& progress);
+  void write_progress(const io::RunSummary& summary);
+  double wall_seconds() const;
   void finish(io::RunSummary& summary);
 
   const io::Case& case_;
@@ -65,6 +72,7 @@ class Runner {
   RunState state_;
   std::map<std::string, double> figures_;
   std::filesystem::path last_checkpoint_;
+  Stopwatch wall_;  // since this process started the run
 };
 
 }  // namespace partimix::app

@@ -9,11 +9,27 @@ std::size_t Simulation::particle_count() const {
   return count;
 }
 
+namespace {
+
+// A method's instance; an error that names a key but no file (from a layer below the case, e.g.
+// the cell grid) is given the key's place in the case file.
+io::MethodInstance build_method(const io::Case& the_case, const io::MethodSpec& spec,
+                                const io::BuildOptions& options) {
+  try {
+    return io::method_registry().create(spec.name)->build(the_case, spec, options);
+  } catch (const InputError& error) {
+    if (!error.location().file.empty())
+      throw;
+    throw InputError(the_case.locate(error.location().key_path), error.message());
+  }
+}
+
+}  // namespace
+
 Simulation build_simulation(const io::Case& the_case, const io::BuildOptions& options) {
   Simulation simulation;
   for (const io::MethodSpec& spec : the_case.methods) {
-    const auto type = io::method_registry().create(spec.name);
-    simulation.methods.push_back(type->build(the_case, spec, options));
+    simulation.methods.push_back(build_method(the_case, spec, options));
     auto& warnings = simulation.methods.back().warnings;
     simulation.warnings.insert(simulation.warnings.end(), warnings.begin(), warnings.end());
   }

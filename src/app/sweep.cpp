@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <filesystem>
 #include <optional>
-#include <regex>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -14,6 +13,7 @@
 #include <fmt/ranges.h>
 
 #include "app/interrupt.hpp"
+#include "app/output_folder.hpp"
 #include "app/run_pool.hpp"
 #include "app/sweep_plan.hpp"
 #include "app/sweep_plot.hpp"
@@ -94,32 +94,6 @@ Sweep plan_sweep(const SweepArguments& arguments) {
   return sweep;
 }
 
-// The entries of `dir` that an earlier sweep wrote: run folders, the table and the plot.
-std::vector<fs::path> earlier_products(const fs::path& dir, std::error_code& error) {
-  static const std::regex run_folder("run_[0-9]+");
-  std::vector<fs::path> products;
-  for (auto it = fs::directory_iterator(dir, error); !error && it != fs::directory_iterator();
-       it.increment(error)) {
-    const std::string name = it->path().filename().string();
-    if (std::regex_match(name, run_folder) || name == "sweep.csv" || name == "np_re.png")
-      products.push_back(it->path());
-  }
-  return products;
-}
-
-// Creates the sweep folder and removes what an earlier sweep left in it.
-void prepare_sweep_dir(const fs::path& dir) {
-  std::error_code error;
-  fs::create_directories(dir, error);
-  for (const fs::path& product : earlier_products(dir, error)) {
-    if (!error)
-      fs::remove_all(product, error);
-  }
-  if (error)
-    throw RunError(
-        fmt::format("cannot prepare the sweep folder {}: {}", dir.string(), error.message()));
-}
-
 int threads_per_run(const SweepArguments& arguments) {
   if (arguments.threads > 0)
     return arguments.threads;
@@ -132,13 +106,17 @@ PoolTask run_task(const SweepArguments& arguments, const Sweep& sweep, std::size
   fs::create_directories(run_dir, error);
   if (error)
     throw RunError(fmt::format("cannot create {}: {}", run_dir.string(), error.message()));
+  record_output(sweep.dir, run_name(index));
+  record_output(sweep.dir, run_name(index) + "/log.txt");
   std::vector<std::string> argv{"/proc/self/exe", "run", arguments.case_file};
   for (const std::string& text : run_overrides(arguments, sweep.axes, sweep.points[index])) {
     argv.push_back("--set");
     argv.push_back(text);
   }
   const std::string threads = std::to_string(threads_per_run(arguments));
-  argv.insert(argv.end(), {"--out", run_dir.string(), "--quiet", "--threads", threads});
+  // --overwrite: the run's folder holds the log the sweep writes, which the run must keep.
+  argv.insert(argv.end(),
+              {"--out", run_dir.string(), "--overwrite", "--quiet", "--threads", threads});
   return {argv, run_dir / "log.txt"};
 }
 
@@ -152,7 +130,9 @@ void report_end(const Sweep& sweep, std::size_t index, int exit_code) {
 }
 
 std::vector<std::optional<int>> run_all(const SweepArguments& arguments, const Sweep& sweep) {
-  prepare_sweep_dir(sweep.dir);
+  prepare_output_folder(sweep.dir, arguments.overwrite);
+  record_output(sweep.dir, "sweep.csv");
+  record_output(sweep.dir, "np_re.png");
   std::vector<PoolTask> tasks;
   for (std::size_t i = 0; i < sweep.points.size(); ++i)
     tasks.push_back(run_task(arguments, sweep, i));

@@ -14,6 +14,7 @@ struct SweepArguments {
   std::filesystem::path output_dir;    // empty: out/<case name>_sweep
   int jobs = 1;                        // runs at a time
   int threads = 0;                     // OpenMP threads per run; 0: cores / jobs, at least 1
+  bool overwrite = false;              // write into a folder with files partimix did not write
 };
 
 // Returns 0 when every run completed, 1 when one did not, 2 on bad input (nothing written),

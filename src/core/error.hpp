@@ -37,4 +37,11 @@ class RunError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The user asked to stop (Ctrl-C, SIGTERM) during a phase that has nothing to keep yet (set-up);
+// exit code kExitInterrupted.
+class Interrupted : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 }  // namespace partimix

@@ -55,6 +55,8 @@ struct Grains {
   std::vector<Vec3> position;
   std::vector<double> radius;
   std::vector<int> species;
+  std::vector<Vec3> velocity;          // empty: at rest
+  std::vector<Vec3> angular_velocity;  // empty: not spinning
 };
 
 }  // namespace partimix::dem

@@ -7,6 +7,7 @@
 #include "core/error.hpp"
 #include "dem/dem_solver.hpp"
 #include "dem/insertion.hpp"
+#include "particles/health.hpp"
 
 namespace partimix::dem {
 namespace {
@@ -20,15 +21,31 @@ double kinetic_energy_per_grain(const ParticleStore& store) {
 
 // Steps with the walls held still until the grains' mean kinetic energy falls below the fill's
 // threshold (checked every 100 steps, after at least 0.01 s) or the fill's settle time passes.
+// Every 100 steps the monitor hears of it and may stop it, and a grain gone wrong (a blow-up)
+// stops it with the reason at dem.fill.
 void settle(const io::Case& the_case, const GrainFill& fill, DemSolver& solver,
-            const ParticleStore& store, std::vector<std::string>& warnings) {
+            const ParticleStore& store, PhaseMonitor* monitor, std::vector<std::string>& warnings) {
   solver.freeze_walls(true);
   double energy = kinetic_energy_per_grain(store);
-  long steps = 0;
+  std::size_t steps = 0;
   while (solver.time() < fill.settle_time) {
     solver.step(solver.stable_dt());
     if (++steps % 100 != 0)
       continue;
+    if (const auto bad = find_bad_particle(store, solver.domain())) {
+      throw io::case_error(the_case, "dem.fill",
+                           fmt::format("the grains blew up while settling, at t = {:.6g} s: {}",
+                                       solver.time(), *bad));
+    }
+    if (monitor != nullptr) {
+      monitor->update("dem: settling the grains", solver.time(), fill.settle_time, steps,
+                      store.size());
+      if (monitor->stop_requested())
+        throw Interrupted(
+            fmt::format("interrupted while settling the grains, at t = {:.6g} s "
+                        "of settle_time = {:.6g} s",
+                        solver.time(), fill.settle_time));
+    }
     energy = kinetic_energy_per_grain(store);
     if (energy < fill.settle_energy && solver.time() > 0.01)
       break;
@@ -48,24 +65,31 @@ void settle(const io::Case& the_case, const GrainFill& fill, DemSolver& solver,
 void split_species(const DemSection& section, DemSolver& solver, const ParticleStore& store) {
   if (section.config.species.size() < 2)
     return;
-  const GrainFill& fill = section.fill;
+  const GrainFill& fill = *section.fill;
   for (std::size_t i = 0; i < store.size(); ++i) {
     const bool tracer = (store.position()[i] - fill.split_point).dot(fill.split_normal) > 0.0;
     solver.set_species(i, tracer ? 1 : 0);
   }
 }
 
-Grains insert(const io::Case& the_case, const GrainFill& fill) {
-  Grains grains;
-  try {
-    grains = insert_random(*fill.region, fill.insertion);
-  } catch (const std::runtime_error& error) {
-    throw io::case_error(the_case, "dem.fill", error.what());
+// The grains of the section: filled at random into the fill region, or as the case lists them.
+Grains grains_of(const io::Case& the_case, const DemSection& section) {
+  Grains grains = section.grains;
+  if (section.fill) {
+    try {
+      grains = insert_random(*section.fill->region, section.fill->insertion);
+    } catch (const std::runtime_error& error) {
+      throw io::case_error(the_case, "dem.fill", error.what());
+    }
   }
-  for (const Vec3& x : grains.position) {
-    if (!the_case.domain.contains(x))
-      throw io::case_error(the_case, "dem.fill.region",
-                           "the fill region reaches outside the domain");
+  for (std::size_t i = 0; i < grains.position.size(); ++i) {
+    const Vec3& x = grains.position[i];
+    if (!the_case.domain.contains(x)) {
+      throw io::case_error(
+          the_case, section.fill ? "dem.fill.region" : section.grains_key,
+          fmt::format("grain {} at ({:.6g}, {:.6g}, {:.6g}) lies outside the domain", i, x.x(),
+                      x.y(), x.z()));
+    }
   }
   return grains;
 }
@@ -78,13 +102,14 @@ std::shared_ptr<io::MethodSection> DemMethod::read(io::Reader& root,
 }
 
 // For a restore, the grains are inserted (their number and radii define the fields) but not
-// settled: the checkpoint holds where they settled and how they moved since.
+// settled: the checkpoint holds where they settled and how they moved since. Grains the case
+// lists are not settled at all: they start as given.
 io::MethodInstance DemMethod::build(const io::Case& the_case, const io::MethodSpec& spec,
                                     const io::BuildOptions& options) const {
   const DemSection& dem = dynamic_cast<const DemSection&>(*spec.section);
   io::MethodInstance instance;
   instance.store = std::make_unique<ParticleStore>();
-  const Grains grains = insert(the_case, dem.fill);
+  const Grains grains = grains_of(the_case, dem);
   std::unique_ptr<DemSolver> solver;
   try {
     solver = std::make_unique<DemSolver>(*instance.store, the_case.domain, dem.config,
@@ -92,8 +117,8 @@ io::MethodInstance DemMethod::build(const io::Case& the_case, const io::MethodSp
   } catch (const InputError& error) {
     throw io::case_error(the_case, error.location().key_path, error.message());
   }
-  if (!options.for_restore) {
-    settle(the_case, dem.fill, *solver, *instance.store, instance.warnings);
+  if (!options.for_restore && dem.fill) {
+    settle(the_case, *dem.fill, *solver, *instance.store, options.monitor, instance.warnings);
     split_species(dem, *solver, *instance.store);
   }
   instance.solver = std::move(solver);

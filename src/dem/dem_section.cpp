@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "dem/grain_list.hpp"
 #include "io/shape_section.hpp"
 
 namespace partimix::dem {
@@ -119,7 +120,8 @@ void refuse_old_wall_keys(Reader& section) {
   }
 }
 
-GrainFill read_fill(Reader& section, const std::filesystem::path& folder) {
+GrainFill read_fill(Reader& section, const std::filesystem::path& folder,
+                    const io::SizeLimits& limits) {
   Reader fill = section.map("fill");
   GrainFill result;
   Reader region = fill.map("region");
@@ -127,6 +129,11 @@ GrainFill read_fill(Reader& section, const std::filesystem::path& folder) {
   region.done();
   InsertionRequest& request = result.insertion;
   request.count = fill.required<int>("count", at_least(1));
+  if (request.count > limits.particles) {
+    throw fill.error("count", fmt::format("{} grains are more than limits.particles = {:.3g}; "
+                                          "raise the limit if the run is meant to be this big",
+                                          request.count, limits.particles));
+  }
   request.radius_min = fill.required<double>("radius", kPositive);
   request.radius_max = fill.optional<double>("radius_max", request.radius_min, kPositive);
   if (request.radius_max < request.radius_min)
@@ -140,6 +147,31 @@ GrainFill read_fill(Reader& section, const std::filesystem::path& folder) {
   split.done();
   fill.done();
   return result;
+}
+
+// Exactly one of `fill` (random, settled), `grains` (a list) and `grains_file` (CSV).
+void read_grains(Reader& section, const io::Case& the_case, DemSection& spec) {
+  const std::filesystem::path folder = std::filesystem::path(the_case.file).parent_path();
+  const std::vector<std::string> ways{"fill", "grains", "grains_file"};
+  std::vector<std::string> given;
+  for (const std::string& key : ways) {
+    if (section.contains(key))
+      given.push_back(key);
+  }
+  if (given.size() != 1) {
+    throw section.error(given.empty() ? "fill" : given[1],
+                        "give exactly one of fill (a random fill), grains (a list) and "
+                        "grains_file (a CSV file)");
+  }
+  if (given[0] == "fill") {
+    spec.fill = read_fill(section, folder, the_case.limits);
+  } else if (given[0] == "grains") {
+    spec.grains = read_grain_list(section, spec.config.species, the_case.limits);
+  } else {
+    const std::string file = section.required<std::string>("grains_file");
+    spec.grains = read_grain_file(folder / file, spec.config.species, the_case.limits);
+  }
+  spec.grains_key = "dem." + given[0];
 }
 
 }  // namespace
@@ -168,7 +200,7 @@ std::shared_ptr<DemSection> read_dem_section(Reader& root, const io::Case& the_c
   read_interactions(section, config);
   for (const io::WallSpec& wall : the_case.walls)
     config.walls.push_back(wall_config(wall, config.wall_interactions));
-  spec->fill = read_fill(section, std::filesystem::path(the_case.file).parent_path());
+  read_grains(section, the_case, *spec);
   section.done();
   return spec;
 }

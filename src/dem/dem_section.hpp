@@ -3,6 +3,8 @@
 // interactions per pair, and how the grains are filled in and settled. The walls come from the
 // case's shared walls section: each wall's surface, motion and material.
 #include <memory>
+#include <optional>
+#include <string>
 
 #include "dem/config.hpp"
 #include "dem/insertion.hpp"
@@ -27,7 +29,9 @@ struct GrainFill {
 class DemSection final : public io::MethodSection {
  public:
   Config config;
-  GrainFill fill;
+  std::optional<GrainFill> fill;  // a random fill, settled; or
+  Grains grains;                  // the grains as the case places them (dem/grain_list.hpp)
+  std::string grains_key;         // where they were given: "dem.grains" or "dem.grains_file"
 
   // Species 1 of the split is the tracer.
   bool has_tracer() const override { return config.species.size() >= 2; }

@@ -86,8 +86,8 @@ void DemSolver::add_fields(const Grains& grains) {
   radius_ = &store_.add_scalar("radius", "m").values;
   species_ = &store_.add_integer("species", "").values;
   angular_velocity_ = &store_.add_vector("angular_velocity", "rad/s").values;
-  force_ = &store_.add_vector("force", "N", false).values;
-  torque_ = &store_.add_vector("torque", "N m", false).values;
+  force_ = &store_.add_vector("contact_force", "N").values;
+  torque_ = &store_.add_vector("contact_torque", "N m").values;
   orientation_w_ = &store_.add_scalar("orientation_w", "", false).values;
   orientation_v_ = &store_.add_vector("orientation_v", "", false).values;
   const std::size_t count = grains.position.size();
@@ -106,6 +106,10 @@ void DemSolver::add_fields(const Grains& grains) {
     (*species_)[i] = s;
     store_.mass()[i] = config_.species[s].density * sphere_volume(grains.radius[i]);
     (*orientation_w_)[i] = 1.0;
+    if (!grains.velocity.empty())
+      store_.velocity()[i] = grains.velocity[i];
+    if (!grains.angular_velocity.empty())
+      (*angular_velocity_)[i] = grains.angular_velocity[i];
   }
 }
 
@@ -167,7 +171,7 @@ void DemSolver::half_kick(double dt) {
   const auto& m = store_.mass();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < store_.size(); ++i) {
-    v[i] += 0.5 * dt / m[i] * (*force_)[i];
+    v[i] += 0.5 * dt * ((*force_)[i] / m[i] + gravity_);
     const double inertia = 0.4 * m[i] * (*radius_)[i] * (*radius_)[i];
     (*angular_velocity_)[i] += 0.5 * dt / inertia * (*torque_)[i];
   }
@@ -227,7 +231,7 @@ void DemSolver::loads_on(std::size_t i, double dt, bool& overflow) {
   const std::size_t n_species = config_.species.size();
   const int s_i = (*species_)[i];
   const double inertia_i = 1.4 * m[i] * radius[i] * radius[i];  // about the contact point
-  (*force_)[i] = m[i] * gravity_;
+  (*force_)[i] = Vec3::Zero();
   (*torque_)[i] = Vec3::Zero();
   std::uint64_t touched = 0;
   auto add = [&](Contact& contact) {

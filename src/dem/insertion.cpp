@@ -1,6 +1,7 @@
 #include "dem/insertion.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <random>
 #include <stdexcept>
 #include <unordered_map>
@@ -54,23 +55,45 @@ class PlacedSpheres {
   std::unordered_map<std::uint64_t, std::vector<std::size_t>> cells_;
 };
 
+// Refuses a count whose spheres, at the smallest radius, could not fit in the region's bounding
+// box even at the densest packing of equal spheres (pi / sqrt(18)): no candidate is drawn then.
+void check_capacity(const geometry::Shape& region, const InsertionRequest& request) {
+  const Vec3 size = region.upper() - region.lower();
+  const double box = size.x() * size.y() * size.z();
+  const double spheres =
+      request.count * 4.0 / 3.0 * std::numbers::pi * std::pow(request.radius_min, 3);
+  const double densest = std::numbers::pi / std::sqrt(18.0);
+  if (std::isfinite(box) && spheres > densest * box) {
+    throw std::runtime_error(fmt::format(
+        "{} spheres of radius {:.3g} m take {:.3g} m^3, more than the region's bounding box "
+        "holds at the densest packing ({:.3g} x {:.3g} m^3); make the region larger or the "
+        "count smaller",
+        request.count, request.radius_min, spheres, densest, box));
+  }
+}
+
 }  // namespace
 
 Grains insert_random(const geometry::Shape& region, const InsertionRequest& request) {
+  check_capacity(region, request);
   std::mt19937_64 random(request.seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const Vec3 lo = region.lower();
   const Vec3 size = region.upper() - lo;
   Grains grains;
   PlacedSpheres placed(2.0 * request.radius_max);
-  const long budget = static_cast<long>(request.count) * request.attempts_per_sphere;
-  for (long attempt = 0;
-       attempt < budget && static_cast<int>(grains.position.size()) < request.count; ++attempt) {
+  long attempts = 0;
+  for (int failures = 0; failures < request.attempts_per_sphere &&
+                         static_cast<int>(grains.position.size()) < request.count;) {
+    ++attempts;
     const double radius =
         request.radius_min + (request.radius_max - request.radius_min) * unit(random);
     const Vec3 x = lo + Vec3(unit(random), unit(random), unit(random)).cwiseProduct(size);
-    if (region.signed_distance(x) > -radius || placed.overlaps(x, radius, grains))
+    if (region.signed_distance(x) > -radius || placed.overlaps(x, radius, grains)) {
+      ++failures;
       continue;
+    }
+    failures = 0;
     placed.add(x, grains.position.size());
     grains.position.push_back(x);
     grains.radius.push_back(radius);
@@ -78,9 +101,9 @@ Grains insert_random(const geometry::Shape& region, const InsertionRequest& requ
   }
   if (static_cast<int>(grains.position.size()) < request.count) {
     throw std::runtime_error(fmt::format(
-        "only {} of {} spheres fitted into the region without overlap after {} attempts; "
-        "make the region larger or the count smaller",
-        grains.position.size(), request.count, budget));
+        "only {} of {} spheres fitted into the region without overlap ({} candidates in a row "
+        "failed, {} in all); make the region larger or the count smaller",
+        grains.position.size(), request.count, request.attempts_per_sphere, attempts));
   }
   return grains;
 }

@@ -15,10 +15,13 @@ struct InsertionRequest {
   double radius_max = 0.0;
   std::uint32_t seed = 1;
   int species = 0;
-  int attempts_per_sphere = 1000;  // gives up (throws) after count * attempts candidates
+  int attempts_per_sphere = 1000;  // gives up (throws) after this many failed candidates in a row
 };
 
-// Throws std::runtime_error naming how many spheres fitted when the region is too full.
+// Throws std::runtime_error naming how many spheres fitted when the region is too full, at once
+// when the spheres' volume exceeds what the region's bounding box could hold at the densest
+// packing. The work is at most (count + 1) * attempts_per_sphere candidates, and far less when
+// the region fills up: the insertion stops at the first run of attempts_per_sphere failures.
 Grains insert_random(const geometry::Shape& region, const InsertionRequest& request);
 
 }  // namespace partimix::dem

@@ -3,24 +3,29 @@
 #include <algorithm>
 #include <cmath>
 
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+
 namespace partimix::geometry {
 namespace {
 
-// The lattice box: per axis a start point and a count of spacings.
+// The lattice box: per axis a start point and a count of spacings. Counts are whole numbers
+// held as doubles, so that a huge box is measured (and refused) rather than overflowing.
 struct LatticeBox {
   std::array<double, 3> start{0.0, 0.0, 0.0};
-  std::array<long, 3> count{1, 1, 1};
+  std::array<double, 3> count{1.0, 1.0, 1.0};
 };
 
 // One axis of the lattice: start + i spacing for i < count.
 struct AxisLattice {
   double start = 0.0;
-  long count = 0;
+  double count = 0.0;
 };
 
 // The number of whole spacings in [from, to], rounded (none when the interval is empty).
-long spacings_in(double from, double to, double spacing) {
-  return to > from ? std::lround((to - from) / spacing) : 0L;
+double spacings_in(double from, double to, double spacing) {
+  return to > from ? std::round((to - from) / spacing) : 0.0;
 }
 
 // The points from + (i + 1/2) spacing up to about `to` (half a spacing from each end when the
@@ -31,8 +36,8 @@ AxisLattice counted_up(double from, double to, double spacing) {
 
 // The same lattice counted down from `to`: to - (i + 1/2) spacing down to about `from`.
 AxisLattice counted_down(double from, double to, double spacing) {
-  const long count = spacings_in(from, to, spacing);
-  return {to - (static_cast<double>(count) - 0.5) * spacing, count};
+  const double count = spacings_in(from, to, spacing);
+  return {to - (count - 0.5) * spacing, count};
 }
 
 // The shape's extent [lo - margin, hi + margin] along one axis, cut at the domain's face where
@@ -82,17 +87,30 @@ Vec3 probe_point(const Vec3& x, const Shape& shape, const Domain& domain) {
 }
 
 template <class Keep>
-std::vector<Vec3> sample(const LatticeBox& box, double spacing, Keep&& keep) {
+std::vector<Vec3> sample(const LatticeBox& box, double spacing, const LatticeLimits& limits,
+                         Keep&& keep) {
+  const double visits = box.count[0] * box.count[1] * box.count[2];
+  if (!(visits <= limits.visits)) {
+    throw InputError({}, fmt::format("at spacing {:.6g} m the lattice spans {:.3g} points, more "
+                                     "than limits.lattice_points = {:.3g}",
+                                     spacing, visits, limits.visits));
+  }
+  const auto count = [&box](int axis) { return static_cast<long>(box.count[axis]); };
   std::vector<Vec3> points;
-  for (long k = 0; k < box.count[2]; ++k) {
-    for (long j = 0; j < box.count[1]; ++j) {
-      for (long i = 0; i < box.count[0]; ++i) {
+  for (long k = 0; k < count(2); ++k) {
+    for (long j = 0; j < count(1); ++j) {
+      for (long i = 0; i < count(0); ++i) {
         const Vec3 x(box.start[0] + static_cast<double>(i) * spacing,
                      box.start[1] + static_cast<double>(j) * spacing,
                      box.start[2] + static_cast<double>(k) * spacing);
-        if (keep(x)) {
-          points.push_back(x);
+        if (!keep(x))
+          continue;
+        if (static_cast<double>(points.size()) >= limits.points) {
+          throw InputError({}, fmt::format("at spacing {:.6g} m it holds more than "
+                                           "limits.particles = {:.3g} particles",
+                                           spacing, limits.points));
         }
+        points.push_back(x);
       }
     }
   }
@@ -101,28 +119,30 @@ std::vector<Vec3> sample(const LatticeBox& box, double spacing, Keep&& keep) {
 
 }  // namespace
 
-std::vector<Vec3> fill(const Shape& shape, double spacing, const Domain& domain) {
+std::vector<Vec3> fill(const Shape& shape, double spacing, const Domain& domain,
+                       const LatticeLimits& limits) {
   const LatticeBox box = lattice_box(shape, spacing, 0.0, domain);
-  return sample(box, spacing, [&](const Vec3& x) {
+  return sample(box, spacing, limits, [&](const Vec3& x) {
     return shape.signed_distance(probe_point(x, shape, domain)) < 0.0;
   });
 }
 
 std::vector<Vec3> wall_layers(const Shape& shape, double spacing, int layers,
-                              const std::vector<Face>& open_faces, const Domain& domain) {
+                              const std::vector<Face>& open_faces, const Domain& domain,
+                              const LatticeLimits& limits) {
   const double thickness = layers * spacing;
   const LatticeBox box = lattice_box(shape, spacing, thickness, domain);
-  return sample(box, spacing, [&](const Vec3& x) {
+  return sample(box, spacing, limits, [&](const Vec3& x) {
     const double distance = shape.signed_distance(probe_point(x, shape, domain));
     return distance > 0.0 && distance < thickness && !shape.beyond_open_end(x, open_faces);
   });
 }
 
 std::vector<Vec3> inside_layers(const Shape& shape, double spacing, int layers,
-                                const Domain& domain) {
+                                const Domain& domain, const LatticeLimits& limits) {
   const double thickness = layers * spacing;
   const LatticeBox box = lattice_box(shape, spacing, 0.0, domain);
-  return sample(box, spacing, [&](const Vec3& x) {
+  return sample(box, spacing, limits, [&](const Vec3& x) {
     const double distance = shape.signed_distance(x);
     return distance <= 0.0 && distance > -thickness;
   });

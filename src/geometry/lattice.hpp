@@ -21,20 +21,30 @@
 
 namespace partimix::geometry {
 
+// What a sampler may cost: the lattice points it visits (the box it spans) and those it keeps.
+// Past either it throws InputError (without a location: the caller knows which key asked) before
+// it allocates, whatever the shape's size: the case's limits (io/size_limits.hpp) come here.
+struct LatticeLimits {
+  double visits = 1.0e9;
+  double points = 1.0e9;
+};
+
 // Points strictly inside the shape (signed distance < 0). Along periodic axes of the domain
 // the lattice spans the whole period.
-std::vector<Vec3> fill(const Shape& shape, double spacing, const Domain& domain);
+std::vector<Vec3> fill(const Shape& shape, double spacing, const Domain& domain,
+                       const LatticeLimits& limits = {});
 
 // Points outside the shape within `layers` spacings of its surface, except beyond its open ends
 // (Shape::beyond_open_end: by default the open faces of its bounding box) and along the periodic
 // axes of the domain (which carry no wall).
 std::vector<Vec3> wall_layers(const Shape& shape, double spacing, int layers,
-                              const std::vector<Face>& open_faces, const Domain& domain);
+                              const std::vector<Face>& open_faces, const Domain& domain,
+                              const LatticeLimits& limits = {});
 
 // The layers of a solid body (an impeller): points inside the shape within `layers` spacings of
 // its surface (signed distance in (-layers spacing, 0]), on the lattice of fill(). Unlike a
 // container, a body is not extended along periodic axes: it is the shape as given.
 std::vector<Vec3> inside_layers(const Shape& shape, double spacing, int layers,
-                                const Domain& domain);
+                                const Domain& domain, const LatticeLimits& limits = {});
 
 }  // namespace partimix::geometry

@@ -1,6 +1,8 @@
 #include "io/analysis_section.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <stdexcept>
 
@@ -185,6 +187,15 @@ const MethodSection& read_method(Reader& item, AnalysisSpec& analysis, const Cas
   return *the_case.method(analysis.method)->section;
 }
 
+// `name`: letters, digits and '_' only, so that "<name>.<column>" stays one CSV field.
+std::string read_name(Reader& item) {
+  const std::string name = item.optional<std::string>("name", "");
+  const auto allowed = [](unsigned char c) { return std::isalnum(c) != 0 || c == '_'; };
+  if (!std::all_of(name.begin(), name.end(), allowed))
+    throw item.error("name", "a name holds letters, digits and '_' only, got '" + name + "'");
+  return name;
+}
+
 }  // namespace
 
 std::vector<AnalysisSpec> read_analyses(Reader& root, const Case& the_case) {
@@ -192,7 +203,9 @@ std::vector<AnalysisSpec> read_analyses(Reader& root, const Case& the_case) {
   std::vector<AnalysisSpec> analyses;
   for (Reader& item : root.optional_list("analyses")) {
     AnalysisSpec analysis;
+    analysis.key = fmt::format("analyses[{}]", analyses.size());
     analysis.type = item.required_choice("type", kTypes);
+    analysis.name = read_name(item);
     const MethodSection& section = read_method(item, analysis, the_case);
     if (analysis.type == "front_position")
       analysis.axis = axis_index(item.choice("axis", "x", axis_names(dimensions)));

@@ -1,6 +1,9 @@
 #include "io/atomic_file.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
+#include <string>
 #include <system_error>
 
 #include "core/error.hpp"
@@ -14,16 +17,24 @@ std::filesystem::path temporary_path(const std::filesystem::path& file) {
   return tmp;
 }
 
+// Why the last system call failed (no space left on device, permission denied, ...): the
+// streams set errno from the write or close that failed.
+std::string reason() {
+  return errno != 0 ? std::strerror(errno) : "an unknown I/O error";
+}
+
 void write_temporary(const std::filesystem::path& tmp, const std::filesystem::path& file,
                      const std::function<void(std::ostream&)>& write_content) {
+  errno = 0;
   std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
   if (!out) {
-    throw RunError("cannot open '" + tmp.string() + "' for writing '" + file.string() + "'");
+    throw RunError("cannot open '" + tmp.string() + "' for writing '" + file.string() +
+                   "': " + reason());
   }
   write_content(out);
   out.close();
   if (!out) {
-    throw RunError("failed writing '" + file.string() + "'");
+    throw RunError("failed writing '" + file.string() + "': " + reason());
   }
 }
 

@@ -4,6 +4,7 @@
 // no concrete method: each method named by `solver` reads its own sections into a
 // MethodSection of its own type (io/method_type.hpp), and the walls, the domain, time and
 // analyses are shared by all of them.
+#include <map>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -21,6 +22,7 @@
 #include "geometry/motion.hpp"
 #include "geometry/shape.hpp"
 #include "geometry/surface.hpp"
+#include "io/size_limits.hpp"
 #include "materials/flow_scales.hpp"
 #include "particles/domain.hpp"
 
@@ -72,6 +74,8 @@ struct OutputSpec {
 // (docs/mixing.md, "Measurements of a granular bed").
 struct AnalysisSpec {
   std::string type;
+  std::string key;   // where it is in the case: "analyses[i]"
+  std::string name;  // optional: its columns and figures are "<name>.<column>"
   std::string method;
   int axis = 0;
   int body = 0;
@@ -112,10 +116,17 @@ struct Case {
   Domain domain;                    // with the number of dimensions
   Vec3 gravity = Vec3::Zero();
   TimeControl time;
+  SizeLimits limits;
   std::vector<WallSpec> walls;
   OutputSpec output;
   std::vector<AnalysisSpec> analyses;
   nlohmann::json resolved;  // every key with the value used, defaults and --set included
+  std::map<std::string, InputLocation> key_locations;  // where each key read was written
+
+  // Where an error about the key at `key_path` points: that key's line and column, else those
+  // of the nearest enclosing key that was written (`walls[2]` for `walls[2].material.friction`
+  // when the material is all defaults), else the file alone.
+  InputLocation locate(const std::string& key_path) const;
 
   // The method named `name`; nullptr when the case does not run it.
   const MethodSpec* method(const std::string& method_name) const;

@@ -48,7 +48,32 @@ void read_sub_steps(Reader& time, std::vector<MethodSpec>& methods) {
   section.done();
 }
 
-TimeControl read_time(Reader& root, std::vector<MethodSpec>& methods) {
+SizeLimits read_limits(Reader& root) {
+  Reader section = root.optional_map("limits");
+  SizeLimits limits;
+  limits.particles = section.optional<double>("particles", limits.particles, at_least(1.0));
+  limits.lattice_points =
+      section.optional<double>("lattice_points", limits.lattice_points, at_least(1.0));
+  limits.steps = section.optional<double>("steps", limits.steps, at_least(1.0));
+  limits.series_rows = section.optional<double>("series_rows", limits.series_rows, at_least(1.0));
+  limits.frames = section.optional<double>("frames", limits.frames, at_least(1.0));
+  section.done();
+  return limits;
+}
+
+// An interval of `time` at `key` that would make more than `limit` of `what` by the end.
+void check_count(Reader& time, const std::string& key, double end, double interval,
+                 const std::string& what, double limit, const std::string& limit_key) {
+  const double count = end / interval;
+  if (count > limit) {
+    throw time.error(key, fmt::format("an interval of {:.3g} s up to time.end = {:.6g} s makes "
+                                      "{:.3g} {}, more than {} = {:.3g}; lengthen the interval "
+                                      "or raise {}",
+                                      interval, end, count, what, limit_key, limit, limit_key));
+  }
+}
+
+TimeControl read_time(Reader& root, std::vector<MethodSpec>& methods, const SizeLimits& limits) {
   Reader section = root.map("time");
   TimeControl time;
   time.end = section.required<double>("end", kPositive);
@@ -57,6 +82,17 @@ TimeControl read_time(Reader& root, std::vector<MethodSpec>& methods) {
       section.optional<double>("sample_interval", time.output_interval, kPositive);
   time.checkpoint_interval = section.optional<double>("checkpoint_interval", 0.0, kNonNegative);
   time.fixed_dt = section.automatic<double>("dt", kPositive);
+  check_count(section, "output_interval", time.end, time.output_interval, "frames", limits.frames,
+              "limits.frames");
+  check_count(section, "sample_interval", time.end, time.sample_interval, "series rows",
+              limits.series_rows, "limits.series_rows");
+  if (time.checkpoint_interval > 0.0) {
+    check_count(section, "checkpoint_interval", time.end, time.checkpoint_interval, "checkpoints",
+                limits.frames, "limits.frames");
+  }
+  if (time.fixed_dt) {
+    check_count(section, "dt", time.end, *time.fixed_dt, "steps", limits.steps, "limits.steps");
+  }
   read_sub_steps(section, methods);
   section.done();
   return time;
@@ -92,7 +128,8 @@ Case read_case(Reader& root, const std::string& path) {
   const int dimensions = read_dimensions(root);
   result.gravity = root.vector("gravity", dimensions, Vec3::Zero());
   result.domain = read_domain(root, dimensions);
-  result.time = read_time(root, result.methods);
+  result.limits = read_limits(root);
+  result.time = read_time(root, result.methods, result.limits);
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
   result.walls = read_walls(root, dimensions, folder);
   read_method_sections(root, result);
@@ -112,12 +149,26 @@ Case load_case(const std::string& path, const std::vector<std::string>& override
   Reader root(document, context);
   Case result = read_case(root, path);
   result.resolved = std::move(context->resolved);
+  result.key_locations = std::move(context->locations);
   return result;
 }
 
 }  // namespace partimix::io
 
 namespace partimix::io {
+
+InputLocation Case::locate(const std::string& key_path) const {
+  for (std::string path = key_path; !path.empty();) {
+    if (const auto found = key_locations.find(path); found != key_locations.end()) {
+      InputLocation location = found->second;
+      location.key_path = key_path;
+      return location;
+    }
+    const std::size_t cut = path.find_last_of(".[");
+    path.resize(cut == std::string::npos ? 0 : cut);
+  }
+  return {file, 0, 0, key_path};
+}
 
 const MethodSpec* Case::method(const std::string& method_name) const {
   for (const MethodSpec& spec : methods) {

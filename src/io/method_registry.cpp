@@ -17,7 +17,7 @@ const Registry<MethodType>& method_registry() {
 }
 
 InputError case_error(const Case& the_case, const std::string& key, const std::string& what) {
-  return InputError(InputLocation{the_case.file, 0, 0, key}, what);
+  return InputError(the_case.locate(key), what);
 }
 
 }  // namespace partimix::io

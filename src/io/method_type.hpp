@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/phase_monitor.hpp"
 #include "core/registry.hpp"
 #include "geometry/moving_bodies.hpp"
 #include "io/case.hpp"
@@ -29,6 +30,8 @@ struct BuildOptions {
   // The state will be restored from a checkpoint: skip the set-up whose result the checkpoint
   // replaces (e.g. settling grains), keep what defines the fields and their sizes.
   bool for_restore = false;
+  // Told how long set-up phases progress, and asked whether to stop; none: silent, unstoppable.
+  PhaseMonitor* monitor = nullptr;
 };
 
 class MethodType {
@@ -48,8 +51,8 @@ class MethodType {
 // The methods by name (io/method_registry.cpp).
 const Registry<MethodType>& method_registry();
 
-// An InputError of the case file at `key` (no line: the case is loaded; the problem shows when
-// it is built).
+// An InputError at `key` of the case, found when the case is built: it points at the line and
+// column where the key (or the nearest enclosing one) was written (Case::locate).
 InputError case_error(const Case& the_case, const std::string& key, const std::string& what);
 
 }  // namespace partimix::io

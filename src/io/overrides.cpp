@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <optional>
 
 #include <fmt/format.h>
@@ -51,8 +52,12 @@ Step read_index(const std::string& path, std::size_t& at) {
                                      [](unsigned char c) { return std::isdigit(c) != 0; })) {
     throw set_error(path, "malformed list index; expected [n] with n a whole number >= 0");
   }
+  std::size_t index = 0;
+  const auto [end, status] = std::from_chars(digits.data(), digits.data() + digits.size(), index);
+  if (status != std::errc() || end != digits.data() + digits.size())
+    throw set_error(path, fmt::format("list index [{}] is too large", digits));
   at = close + 1;
-  return Step{"", std::stoul(digits)};
+  return Step{"", index};
 }
 
 std::vector<Step> parse_path(const std::string& path) {
@@ -100,6 +105,27 @@ YAML::Node descend(YAML::Node current, const std::vector<Step>& steps, std::size
   return current[*step.index];
 }
 
+// `key.path=null` (or `~`, or nothing after '='): the key is removed from its map, so that its
+// default holds or another key can take its place. A key that is not there is no error.
+std::string remove_key(YAML::Node& root, const std::vector<Step>& steps) {
+  const std::string path = render(steps, steps.size());
+  if (steps.back().index)
+    throw set_error(path, "null removes a key of a map, not an item of a list");
+  YAML::Node parent = root;
+  for (std::size_t i = 0; i + 1 < steps.size(); ++i) {
+    const YAML::Node next = steps[i].index ? (parent.IsSequence() && *steps[i].index < parent.size()
+                                                  ? parent[*steps[i].index]
+                                                  : YAML::Node())
+                                           : (parent.IsMap() ? parent[steps[i].key] : YAML::Node());
+    if (!next.IsDefined())
+      return path;
+    parent.reset(next);
+  }
+  if (parent.IsMap())
+    parent.remove(steps.back().key);
+  return path;
+}
+
 YAML::Node parse_value(const std::string& path, const std::string& text) {
   try {
     const YAML::Node value = YAML::Load(text);
@@ -120,11 +146,14 @@ std::string apply_one(YAML::Node& root, const std::string& text) {
   }
   const std::vector<Step> steps = parse_path(raw_path);
   const std::string path = render(steps, steps.size());
+  const YAML::Node value = parse_value(path, text.substr(equals + 1));
+  if (value.IsNull())
+    return remove_key(root, steps);
   YAML::Node target = root;
   for (std::size_t i = 0; i < steps.size(); ++i) {
     target.reset(descend(target, steps, i));
   }
-  target = parse_value(path, text.substr(equals + 1));
+  target = value;
   return path;
 }
 

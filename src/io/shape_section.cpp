@@ -10,6 +10,7 @@
 #include "geometry/cone.hpp"
 #include "geometry/drum.hpp"
 #include "geometry/plane.hpp"
+#include "geometry/triangle_check.hpp"
 #include "geometry/triangle_mesh.hpp"
 
 namespace partimix::io {
@@ -83,7 +84,7 @@ ShapePtr read_plate(Reader& item, int dimensions) {
 ShapePtr read_mesh(Reader& item, int dimensions, const std::filesystem::path& case_folder) {
   MeshItem mesh = read_mesh_item(item, dimensions, case_folder);
   try {
-    return std::make_shared<geometry::TriangleMesh>(std::move(mesh.triangles), mesh.offset);
+    return std::make_shared<geometry::TriangleMesh>(std::move(mesh.triangles), Vec3::Zero());
   } catch (const InputError& error) {
     throw item.error("file",
                      fmt::format("cannot use the mesh: {}: {}", mesh.file, error.message()));
@@ -133,11 +134,17 @@ MeshItem read_mesh_item(Reader& item, int dimensions, const std::filesystem::pat
   MeshItem mesh;
   mesh.file = item.required<std::string>("file");
   const double scale = item.optional<double>("scale", 1.0, kPositive);
-  mesh.offset = item.vector("offset", 3, Vec3::Zero());
+  const Vec3 offset = item.vector("offset", 3, Vec3::Zero());
+  const std::string path = (case_folder / mesh.file).string();
   try {
-    mesh.triangles = geometry::read_stl((case_folder / mesh.file).string(), scale);
+    mesh.triangles = geometry::read_stl(path, scale);
   } catch (const InputError& error) {
     throw item.error("file", fmt::format("cannot use the mesh: {}", error.what()));
+  }
+  try {
+    mesh.triangles = geometry::checked_triangles(std::move(mesh.triangles), offset);
+  } catch (const InputError& error) {
+    throw item.error("file", fmt::format("cannot use the mesh {}: {}", path, error.message()));
   }
   return mesh;
 }

@@ -30,8 +30,7 @@ std::shared_ptr<const geometry::Shape> read_shape_of(const std::string& shape, R
 // `file` that quotes the file's own error.
 struct MeshItem {
   std::string file;
-  geometry::TriangleSoup triangles;
-  Vec3 offset = Vec3::Zero();
+  geometry::TriangleSoup triangles;  // scaled and moved by `offset`, checked (triangle_check.hpp)
 };
 MeshItem read_mesh_item(Reader& item, int dimensions, const std::filesystem::path& case_folder);
 

@@ -67,13 +67,10 @@ void read_mesh_wall(Reader& item, WallSpec& wall, int dimensions,
                     const std::filesystem::path& folder) {
   MeshItem mesh = read_mesh_item(item, dimensions, folder);
   try {
-    wall.shape = std::make_shared<geometry::TriangleMesh>(mesh.triangles, mesh.offset);
+    wall.shape = std::make_shared<geometry::TriangleMesh>(mesh.triangles, Vec3::Zero());
   } catch (const InputError& error) {
     wall.no_shape = item.error("file", fmt::format("the mesh {} is not a closed surface ({})",
                                                    mesh.file, error.message()));
-    for (geometry::Triangle& t : mesh.triangles)
-      for (Vec3& corner : t.corner)
-        corner += mesh.offset;
     wall.surface = std::make_shared<geometry::MeshShellSurface>(mesh.triangles);
   }
 }

@@ -287,7 +287,15 @@ YAML::Node Reader::find(const std::string& key) {
   if (std::find(known_.begin(), known_.end(), key) == known_.end()) {
     known_.push_back(key);
   }
-  return std::as_const(node_)[key];
+  const YAML::Node node = std::as_const(node_)[key];
+  remember(node, path_of(key));
+  return node;
+}
+
+// Where the set-up of the case (after reading) finds a problem with the key at `path`.
+void Reader::remember(const YAML::Node& node, const std::string& path) const {
+  if (node.IsDefined())
+    context_->locations.insert_or_assign(path, context_->locate(path, node.Mark()));
 }
 
 YAML::Node Reader::find_required(const std::string& key) {
@@ -323,6 +331,7 @@ std::vector<Reader> Reader::items(const YAML::Node& node, const std::string& key
     if (!item.IsMap()) {
       throw error_at(item, item_path(path_of(key), i), "expected a map, got " + describe(item));
     }
+    remember(item, item_path(path_of(key), i));
     readers.push_back(child(item, item_path(path_of(key), i), pointer_ / key / i));
   }
   return readers;

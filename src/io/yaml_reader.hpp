@@ -5,6 +5,7 @@
 // getter asked for, listing those that were. Every problem is an InputError naming the file,
 // line, column and dotted key path (`fluid.regions[1].max`), or "--set" for overridden keys.
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -34,6 +35,7 @@ struct ReadContext {
   std::string file;
   std::vector<std::string> overridden;  // key paths set by --set; errors there name "--set"
   nlohmann::json resolved;              // every key read, with the value used
+  std::map<std::string, InputLocation> locations;  // where each key and list item read was
 
   // Where an error about the node at `key_path` points: "--set" when --set wrote or created
   // that node, otherwise the file at `mark` (line 0 when the node has no mark).
@@ -97,6 +99,7 @@ class Reader {
   InputError error_at(const YAML::Node& node, const std::string& path,
                       const std::string& message) const;
   void record(const std::string& key, nlohmann::json value);
+  void remember(const YAML::Node& node, const std::string& path) const;
   template <class T>
   T decode(const YAML::Node& node, const std::string& path, Bound bound,
            const std::string& expected) const;

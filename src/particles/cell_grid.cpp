@@ -5,31 +5,60 @@
 #include <stdexcept>
 #include <string>
 
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+
 namespace partimix {
+
+namespace {
+
+// At most this many cells, whatever the domain's size: a large domain gets larger cells (still
+// at least one interaction radius wide), so the grid's memory is bounded (4 bytes per cell).
+constexpr double kMaxCells = 1 << 24;
+
+constexpr const char* kAxisNames[] = {"x", "y", "z"};
+
+}  // namespace
 
 CellGrid::CellGrid(const Domain& domain, double radius) : domain_(domain), radius_(radius) {
   if (!(radius > 0.0)) {
     throw std::invalid_argument("cell grid: interaction radius must be positive");
   }
   const Vec3 length = domain.length();
+  std::array<double, 3> wanted{1.0, 1.0, 1.0};
+  double total = 1.0;
+  for (int axis = 0; axis < domain.dimensions; ++axis) {
+    wanted[axis] = std::max(1.0, std::floor(length[axis] / radius));
+    total *= wanted[axis];
+    if (domain.periodic[axis] && wanted[axis] < 3.0) {
+      throw InputError(
+          InputLocation{"", 0, 0, "domain.periodic"},
+          fmt::format("the periodic axis {} is {:.6g} m long; it must be at least three "
+                      "interaction radii, 3 x {:.6g} m = {:.6g} m",
+                      kAxisNames[axis], length[axis], radius, 3.0 * radius));
+    }
+  }
+  const double shrink =
+      total > kMaxCells ? std::pow(kMaxCells / total, 1.0 / domain.dimensions) : 1.0;
   cell_size_ = length;
   periodic_length_ = length;
   for (int axis = 0; axis < domain.dimensions; ++axis) {
-    cells_[axis] = std::max(1, static_cast<int>(std::floor(length[axis] / radius)));
+    const double floor_cells = domain.periodic[axis] ? 3.0 : 1.0;
+    cells_[axis] = static_cast<int>(std::max(floor_cells, std::floor(wanted[axis] * shrink)));
     cell_size_[axis] = length[axis] / cells_[axis];
-    if (domain.periodic[axis] && cells_[axis] < 3) {
-      throw std::invalid_argument("periodic axis " + std::to_string(axis) +
-                                  " must be at least three interaction radii long");
-    }
   }
   cell_start_.assign(static_cast<std::size_t>(cells_[0]) * cells_[1] * cells_[2] + 1, 0);
 }
 
+// NaN and infinite coordinates land in an edge cell; the health check reports them.
 int CellGrid::cell_coordinate(double x, int axis) const {
   if (cells_[axis] == 1)
     return 0;
-  const int c = static_cast<int>(std::floor((x - domain_.lo[axis]) / cell_size_[axis]));
-  return std::clamp(c, 0, cells_[axis] - 1);
+  const double c = std::floor((x - domain_.lo[axis]) / cell_size_[axis]);
+  if (!(c > 0.0))
+    return 0;
+  return c >= cells_[axis] - 1 ? cells_[axis] - 1 : static_cast<int>(c);
 }
 
 void CellGrid::build(std::span<const Vec3> positions) {

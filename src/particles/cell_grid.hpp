@@ -16,8 +16,9 @@ namespace partimix {
 
 class CellGrid {
  public:
-  // radius: the interaction radius (kernel support). Throws std::invalid_argument when a
-  // periodic axis is shorter than three cells, where the 27-cell stencil would meet itself.
+  // radius: the interaction radius (kernel support). Throws InputError at key domain.periodic
+  // when a periodic axis is shorter than three radii, where the 27-cell stencil would meet
+  // itself. Cells may be wider than the radius so that there are at most 2^24 of them.
   CellGrid(const Domain& domain, double radius);
 
   void build(std::span<const Vec3> positions);

@@ -3,6 +3,7 @@
 // length is the period: positions are wrapped into [lo, hi) and distances use the nearest image.
 // A particle outside the box on a non-periodic axis is lost and stops the run.
 #include <array>
+#include <cmath>
 
 #include "core/vec.hpp"
 
@@ -32,15 +33,18 @@ struct Domain {
     return d;
   }
 
-  // Moves a position into [lo, hi) along the periodic axes.
+  // Moves a position into [lo, hi) along the periodic axes, by whole periods in one step
+  // however far out it is. A non-finite coordinate is left as it is, for the health check to
+  // report (particles/health.hpp).
   void wrap(Vec3& x) const {
     for (int axis = 0; axis < dimensions; ++axis) {
-      if (periodic[axis]) {
+      if (periodic[axis] && std::isfinite(x[axis]) && (x[axis] < lo[axis] || x[axis] >= hi[axis])) {
         const double period = hi[axis] - lo[axis];
-        while (x[axis] >= hi[axis])
-          x[axis] -= period;
-        while (x[axis] < lo[axis])
-          x[axis] += period;
+        x[axis] -= std::floor((x[axis] - lo[axis]) / period) * period;
+        if (x[axis] >= hi[axis])  // rounding of a point just below lo
+          x[axis] = lo[axis];
+        if (x[axis] < lo[axis])
+          x[axis] = lo[axis];
       }
     }
   }

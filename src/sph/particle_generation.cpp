@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -55,10 +56,36 @@ bool blocked_by(const io::WallSpec& wall, const Vec3& x, double spacing) {
   return near_box && wall.shape->signed_distance(x) < clearance;
 }
 
-// The fluid lattice points of `region`, less those that a solid wall blocks.
-std::vector<Vec3> fluid_points(const io::Case& the_case, double spacing,
-                               const FluidRegion& region) {
-  std::vector<Vec3> points = geometry::fill(*region.shape, spacing, the_case.domain);
+// The case's limits on a lattice that adds to the `existing` particles of the store.
+geometry::LatticeLimits limits_after(const io::Case& the_case, std::size_t existing) {
+  return {the_case.limits.lattice_points,
+          the_case.limits.particles - static_cast<double>(existing)};
+}
+
+// sample(), with a lattice that passes the case's limits reported at `key`.
+template <class Sample>
+std::vector<Vec3> located(const io::Case& the_case, const std::string& key, Sample&& sample) {
+  try {
+    return sample();
+  } catch (const InputError& error) {
+    throw io::case_error(the_case, key, error.message());
+  }
+}
+
+// The fluid lattice points of region `r`, less those that a solid wall blocks.
+std::vector<Vec3> fluid_points(const io::Case& the_case, double spacing, const FluidSpec& fluid,
+                               std::size_t r, std::size_t existing) {
+  const std::string key = fmt::format("fluid.regions[{}]", r);
+  std::vector<Vec3> points = located(the_case, key, [&] {
+    return geometry::fill(*fluid.regions[r].shape, spacing, the_case.domain,
+                          limits_after(the_case, existing));
+  });
+  if (points.empty()) {
+    throw io::case_error(the_case, key,
+                         fmt::format("no lattice point at spacing {:.6g} m lies inside this "
+                                     "region within the domain",
+                                     spacing));
+  }
   std::erase_if(points, [&](const Vec3& x) {
     return std::any_of(the_case.walls.begin(), the_case.walls.end(),
                        [&](const io::WallSpec& wall) { return blocked_by(wall, x, spacing); });
@@ -67,14 +94,22 @@ std::vector<Vec3> fluid_points(const io::Case& the_case, double spacing,
 }
 
 // The wall particles of wall `w`: layers inside a solid body, outside a container.
-std::vector<Vec3> wall_points(const io::Case& the_case, std::size_t w, double spacing, int layers) {
+std::vector<Vec3> wall_points(const io::Case& the_case, std::size_t w, double spacing, int layers,
+                              std::size_t existing) {
   const io::WallSpec& wall = the_case.walls[w];
+  const std::string key = fmt::format("walls[{}]", w);
+  const geometry::LatticeLimits limits = limits_after(the_case, existing);
   if (!wall.solid) {
-    return geometry::wall_layers(*wall.shape, spacing, layers, wall.open_faces, the_case.domain);
+    return located(the_case, key, [&] {
+      return geometry::wall_layers(*wall.shape, spacing, layers, wall.open_faces, the_case.domain,
+                                   limits);
+    });
   }
-  std::vector<Vec3> points = geometry::inside_layers(*wall.shape, spacing, layers, the_case.domain);
+  std::vector<Vec3> points = located(the_case, key, [&] {
+    return geometry::inside_layers(*wall.shape, spacing, layers, the_case.domain, limits);
+  });
   if (points.empty()) {
-    throw io::case_error(the_case, fmt::format("walls[{}]", w),
+    throw io::case_error(the_case, key,
                          "no lattice point lies inside this solid wall: it is thinner than about "
                          "half a spacing; make it thicker or sph.spacing smaller");
   }
@@ -120,6 +155,10 @@ void tag_tracer(const FluidSpec& fluid, ParticleStore& store) {
 
 }  // namespace
 
+double kernel_support(const Config& config) {
+  return kernel_reach(config) * config.spacing;
+}
+
 int wall_layers_for(const Config& config) {
   if (config.wall_layers)
     return *config.wall_layers;
@@ -131,14 +170,15 @@ std::unique_ptr<geometry::MovingBodies> generate_particles(const io::Case& the_c
                                                            ParticleStore& store,
                                                            std::vector<std::string>& warnings) {
   const double spacing = section.config.spacing;
-  for (const auto& region : section.fluid.regions)
-    append(store, fluid_points(the_case, spacing, region), ParticleKind::fluid);
+  for (std::size_t r = 0; r < section.fluid.regions.size(); ++r)
+    append(store, fluid_points(the_case, spacing, section.fluid, r, store.size()),
+           ParticleKind::fluid);
   const int layers = wall_layers_for(section.config);
   auto bodies = std::make_unique<geometry::MovingBodies>(store, the_case.domain);
   for (std::size_t w = 0; w < the_case.walls.size(); ++w) {
     const io::WallSpec& wall = the_case.walls[w];
     const std::size_t first = store.size();
-    const std::vector<Vec3> points = wall_points(the_case, w, spacing, layers);
+    const std::vector<Vec3> points = wall_points(the_case, w, spacing, layers, store.size());
     if (auto warning = see_through_warning(the_case, section.config, w, points))
       warnings.push_back(std::move(*warning));
     append(store, points, ParticleKind::wall);

@@ -1,5 +1,8 @@
 #include "sph/sph_method.hpp"
 
+#include <fmt/format.h>
+
+#include "sph/free_surface.hpp"
 #include "sph/particle_generation.hpp"
 #include "sph/wcsph_solver.hpp"
 
@@ -25,6 +28,14 @@ io::MethodInstance SphMethod::build(const io::Case& the_case, const io::MethodSp
         instance.bodies.get());
   } catch (const InputError& error) {
     throw io::case_error(the_case, error.location().key_path, error.message());
+  }
+  if (the_case.gravity.norm() == 0.0 &&
+      has_free_surface(*instance.store, the_case.domain, kernel_support(section.config))) {
+    instance.warnings.push_back(fmt::format(
+        "{}: gravity: the fluid has a free surface but gravity is zero: nothing holds the "
+        "surface, and a stirred fluid is flung out of an open vessel; close the vessel with a "
+        "lid (the walls' `open`) or give gravity",
+        the_case.file));
   }
   return instance;
 }

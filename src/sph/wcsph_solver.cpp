@@ -121,6 +121,7 @@ WcsphSolver::WcsphSolver(ParticleStore& store, const Domain& domain, const Confi
   move_bodies(0.0);
   sort_by_cell();
   interact();
+  initial_dt_ = stable_dt();
 }
 
 // The grid and the rate-evaluation state are those of the end of the last step (or of the
@@ -341,7 +342,7 @@ std::map<std::string, double> WcsphSolver::derived_parameters() const {
           {"particle_mass [kg]", fields_.mass.empty() ? 0.0 : fields_.mass.front()},
           {"fluid_particles [-]", static_cast<double>(fluid)},
           {"wall_particles [-]", static_cast<double>(store_.size() - fluid)},
-          {"initial_time_step [s]", stable_dt()}};
+          {"initial_time_step [s]", initial_dt_}};
 }
 
 }  // namespace partimix::sph

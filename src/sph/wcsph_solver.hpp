@@ -75,6 +75,7 @@ class WcsphSolver final : public Solver {
   double time_ = 0.0;
   geometry::MovingBodies* bodies_;
   bool warned_about_speed_ = false;
+  double initial_dt_ = 0.0;  // the stable step at t = 0, for run.json (derived_parameters)
   materials::BoundedRheology rheology_;
   bool newtonian_ = true;
   double max_viscosity_ = 0.0;   // largest apparent viscosity of the fluid now [Pa s]

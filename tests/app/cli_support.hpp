@@ -4,6 +4,7 @@
 // and readers for what a run writes (series.csv, <method>.pvd, run.json).
 #include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -96,7 +97,10 @@ struct Outcome {
 // scratch.logs(). A child still running when the object goes is killed.
 class Child {
  public:
-  Child(const Scratch& scratch, const std::vector<std::string>& arguments)
+  // file_size_limit > 0: no file may grow past that many bytes (RLIMIT_FSIZE, with SIGXFSZ
+  // ignored), so that a write fails as on a full disk.
+  Child(const Scratch& scratch, const std::vector<std::string>& arguments,
+        rlim_t file_size_limit = 0)
       : out_file_(scratch.logs() / "stdout.txt"), err_file_(scratch.logs() / "stderr.txt") {
     std::vector<std::string> words{PARTIMIX_BINARY};
     words.insert(words.end(), arguments.begin(), arguments.end());
@@ -109,7 +113,7 @@ class Child {
     const std::string err = err_file_.string();
     pid_ = ::fork();
     if (pid_ == 0)
-      exec_in_child(work.c_str(), out.c_str(), err.c_str(), argv.data());
+      exec_in_child(work.c_str(), out.c_str(), err.c_str(), argv.data(), file_size_limit);
     if (pid_ < 0)
       ADD_FAILURE() << "fork failed: errno " << errno;
   }
@@ -150,9 +154,14 @@ class Child {
  private:
   // Only async-signal-safe calls between fork and exec.
   [[noreturn]] static void exec_in_child(const char* work, const char* out, const char* err,
-                                         char* const* argv) {
+                                         char* const* argv, rlim_t file_size_limit) {
     const int out_fd = ::open(out, O_WRONLY | O_CREAT | O_TRUNC, 0644);
     const int err_fd = ::open(err, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (file_size_limit > 0) {
+      const rlimit limit{file_size_limit, file_size_limit};
+      ::signal(SIGXFSZ, SIG_IGN);
+      ::setrlimit(RLIMIT_FSIZE, &limit);
+    }
     if (::chdir(work) == 0 && out_fd >= 0 && err_fd >= 0 && ::dup2(out_fd, STDOUT_FILENO) >= 0 &&
         ::dup2(err_fd, STDERR_FILENO) >= 0) {
       ::execv(argv[0], argv);

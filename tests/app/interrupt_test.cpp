@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli_support.hpp"
+#include "grains_case.hpp"
 
 namespace partimix::cli_test {
 namespace {
@@ -42,15 +43,21 @@ walls:
     open: [y+]
 )";
 
-TEST(Interrupt, SigintEndsTheRunWithTheCurrentFrame) {
+// SIGINT (Ctrl-C) and SIGTERM (a batch system, `kill`) end a run the same way.
+class Interrupt : public ::testing::TestWithParam<int> {};
+
+TEST_P(Interrupt, EndsTheRunWithTheCurrentFrame) {
   const Scratch scratch;
   scratch.write("case.yaml", kLongTank);
   const fs::path out = scratch.work() / "out";
   Child child(scratch, {"run", "case.yaml", "--out", "out", "-q", "-t", "1"});
-  // run.json is first written after the handler is installed; the second frame means steps ran.
-  ASSERT_TRUE(wait_for_file(out / "frames" / "sph_000001.vtp"));
-  ASSERT_TRUE(fs::exists(out / "run.json"));
-  child.signal(SIGINT);
+  // The third frame means steps ran, and run.json has followed the second.
+  ASSERT_TRUE(wait_for_file(out / "frames" / "sph_000002.vtp"));
+  const nlohmann::json running = read_json(out / "run.json").at("run");
+  EXPECT_EQ(running.at("status"), "running");
+  EXPECT_GT(running.at("steps").get<int>(), 0) << "run.json is not updated at every frame";
+  EXPECT_GE(running.at("simulated_time").get<double>(), 0.01 - 1e-9);
+  child.signal(GetParam());
   const Outcome outcome = child.wait();
   EXPECT_EQ(outcome.exit_code, 130) << outcome.err;
   EXPECT_THAT(outcome.err, HasSubstr("interrupted at step "));
@@ -65,6 +72,30 @@ TEST(Interrupt, SigintEndsTheRunWithTheCurrentFrame) {
   EXPECT_EQ(frames.back().time, stopped_at);
   EXPECT_TRUE(fs::exists(out / frames.back().file));
   EXPECT_THAT(frame_files(out), ElementsAreArray(files_of(frames)));
+}
+
+INSTANTIATE_TEST_SUITE_P(Signals, Interrupt, ::testing::Values(SIGINT, SIGTERM),
+                         [](const auto& variant) {
+                           return variant.param == SIGINT ? "Sigint" : "Sigterm";
+                         });
+
+// Grains settling for a long time before the run: Ctrl-C ends the settling, and nothing is
+// written (the run has not started).
+TEST(InterruptSettling, SigintEndsTheSettlingAndWritesNothing) {
+  const Scratch scratch;
+  scratch.write("case.yaml", replaced(kGrainsInABox, "settle_time: 0.05",
+                                      "settle_time: 1000\n    settle_energy: 1.0e-30"));
+  Child child(scratch, {"run", "case.yaml", "--out", "out", "-t", "1"});
+  const auto deadline = Clock::now() + kTimeLimit;
+  while (read_file(scratch.logs() / "stderr.txt").find("settling") == std::string::npos &&
+         Clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  child.signal(SIGINT);
+  const Outcome outcome = child.wait();
+  EXPECT_EQ(outcome.exit_code, 130) << outcome.err;
+  EXPECT_THAT(outcome.err, HasSubstr("interrupted while settling the grains"));
+  EXPECT_THAT(outcome.err, HasSubstr("nothing was written"));
+  EXPECT_FALSE(fs::exists(scratch.work() / "out"));
 }
 
 }  // namespace

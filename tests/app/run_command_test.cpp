@@ -120,5 +120,19 @@ TEST_F(PlotCommand, WritesTheOverviewPng) {
   EXPECT_THAT(read_file(overview), StartsWith("\x89PNG"));
 }
 
+// The folder's name reaches the plot script as one argument: no shell ever reads it.
+TEST_F(PlotCommand, AFolderNameWithShellSyntaxIsOnlyAName) {
+  const std::string name = "q'; touch INJECTED; echo '$(touch INJECTED2)";
+  fs::rename(out(), scratch_.work() / name);
+  const Outcome plot = run_partimix(scratch_, {"plot", name});
+  EXPECT_EQ(plot.exit_code, 0) << plot.out << plot.err;
+  EXPECT_TRUE(fs::exists(scratch_.work() / name / "plots" / "overview.png"));
+  EXPECT_FALSE(fs::exists(scratch_.work() / "INJECTED"));
+  EXPECT_FALSE(fs::exists(scratch_.work() / "INJECTED2"));
+  const Outcome missing = run_partimix(scratch_, {"plot", "q'; touch INJECTED; '"});
+  EXPECT_NE(missing.exit_code, 0);
+  EXPECT_FALSE(fs::exists(scratch_.work() / "INJECTED"));
+}
+
 }  // namespace
 }  // namespace partimix::cli_test

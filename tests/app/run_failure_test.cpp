@@ -113,5 +113,19 @@ TEST(RunFailure, OutputFolderThatCannotBeCreatedFailsTheRun) {
   EXPECT_THAT(outcome.err, HasSubstr("case.yaml/out"));
 }
 
+// A write that fails (here a frame larger than the process may write, as on a full disk) stops
+// the run with the system's reason, and run.json says so.
+TEST(RunFailure, AFailedWriteNamesTheReason) {
+  const Scratch scratch;
+  scratch.write("case.yaml", replaced(kFallingBlock, "spacing: 0.02", "spacing: 0.004"));
+  const Outcome outcome = Child(scratch, kRun, 40000).wait();
+  EXPECT_EQ(outcome.exit_code, 1) << outcome.err;
+  EXPECT_THAT(outcome.err, HasSubstr("failed writing 'out/frames/sph_000000.vtp': File too large"));
+  const nlohmann::json run = read_json(scratch.work() / "out" / "run.json").at("run");
+  EXPECT_EQ(run.at("status"), "failed");
+  EXPECT_THAT(run.at("message").get<std::string>(), HasSubstr("File too large"));
+  EXPECT_FALSE(fs::exists(scratch.work() / "out" / "frames" / "sph_000000.vtp"));
+}
+
 }  // namespace
 }  // namespace partimix::cli_test

@@ -113,7 +113,7 @@ TEST_F(SweepCommand, AFailedRunLeavesTheOthersAndTheTable) {
   EXPECT_THAT(first(cells[2], 3), ElementsAre("run_001", "0.01", "failed"));
   EXPECT_THAT(outcome.err, HasSubstr("see s/run_001/log.txt"));
   EXPECT_THAT(read_file(scratch_.work() / "s" / "run_001" / "log.txt"),
-              HasSubstr("the case generates no particles"));
+              HasSubstr("no lattice point at spacing 0.01 m lies inside this region"));
 }
 
 TEST_F(SweepCommand, SigintEndsTheRunningRunAndSkipsTheRest) {

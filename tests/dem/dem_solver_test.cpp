@@ -58,7 +58,7 @@ double rebound_speed(double restitution, double dt_fraction_of_rayleigh) {
   add_plane(config, Vec3::Zero(), Vec3::UnitY());
   ParticleStore store;
   DemSolver solver(store, box(0.05), config, Vec3::Zero(),
-                   Grains{{Vec3(0.0, 1.001 * kRadius, 0.0)}, {kRadius}, {0}});
+                   Grains{{Vec3(0.0, 1.001 * kRadius, 0.0)}, {kRadius}, {0}, {}, {}});
   store.velocity()[0] = Vec3(0.0, -1.0, 0.0);
   const double dt = dt_fraction_of_rayleigh > 0.0
                         ? dt_fraction_of_rayleigh * solver.derived_parameters()["rayleigh_time [s]"]
@@ -81,7 +81,9 @@ TEST(DemSolver, HeadOnPairConservesMomentumAndReboundsAtTheRestitution) {
   DemSolver solver(store, box(0.05), one_species(kRestitution, 0.3), Vec3::Zero(),
                    Grains{{Vec3(-1.01 * kRadius, 0.0, 0.0), Vec3(1.01 * kRadius, 0.0, 0.0)},
                           {kRadius, kRadius},
-                          {0, 0}});
+                          {0, 0},
+                          {},
+                          {}});
   const std::size_t left = store.id()[0] == 0 ? 0 : 1;
   store.velocity()[left] = Vec3(0.5, 0.0, 0.0);
   store.velocity()[1 - left] = Vec3(-0.5, 0.0, 0.0);
@@ -107,7 +109,7 @@ double incline_distance(double alpha, double friction, double duration) {
   const double rest = std::pow(
       mass * g * std::cos(alpha) / (4.0 / 3.0 * 1.0e7 / 0.91 * std::sqrt(kRadius)), 2.0 / 3.0);
   DemSolver solver(store, domain, config, gravity,
-                   Grains{{Vec3(0.0, kRadius - rest, 0.0)}, {kRadius}, {0}});
+                   Grains{{Vec3(0.0, kRadius - rest, 0.0)}, {kRadius}, {0}, {}, {}});
   double travelled = 0.0;
   const double dt = solver.stable_dt();
   for (double t = 0.0; t < duration; t += dt) {
@@ -145,7 +147,7 @@ TEST(DemSolver, GrainCoRotatingWithTheDrumStaysWithIt) {
   ParticleStore store;
   const double centre = drum_radius - kRadius;
   DemSolver solver(store, domain, config, Vec3::Zero(),
-                   Grains{{Vec3(0.0, -centre, 0.0)}, {kRadius}, {0}});
+                   Grains{{Vec3(0.0, -centre, 0.0)}, {kRadius}, {0}, {}, {}});
   const double omega = 30.0 * 2.0 * std::numbers::pi / 60.0;
   store.velocity()[0] = Vec3(omega * centre, 0.0, 0.0);
   store.find_vector("angular_velocity")->values[0] = omega * Vec3::UnitZ();

@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "case_files.hpp"
+#include "geometry/triangle_check.hpp"
 #include "support/box_mesh.hpp"
 #include "support/sph_case.hpp"
 #include "support/stl_files.hpp"
@@ -106,6 +107,46 @@ TEST(CaseMesh, OpenMeshIsAnErrorAboutTheFileKey) {
   expect_location(error, "case.yaml", 20, 11, "walls[0].file");
   EXPECT_THAT(error.message(), HasSubstr("open.stl"));
   EXPECT_THAT(error.message(), HasSubstr("not closed"));
+}
+
+// Triangles without area: a repeated corner, and three corners on a line.
+geometry::TriangleSoup flat_triangles() {
+  geometry::Triangle repeated{{Vec3(0, 0, 0), Vec3(0, 0, 0), Vec3(1, 0, 0)}};
+  geometry::Triangle on_a_line{{Vec3(0, 0, 0), Vec3(0.5, 0.5, 0.5), Vec3(1, 1, 1)}};
+  return {repeated, on_a_line};
+}
+
+// One check for every method (issue 15: DEM accepted a mesh that SPH refused).
+TEST(CaseMesh, AMeshOfOnlyDegenerateTrianglesIsRefusedForEveryMethod) {
+  const std::string dem_case = R"(solver: dem
+dimensions: 3
+domain: {min: [-1, -1, -1], max: [1, 1, 1]}
+time: {end: 1.0, output_interval: 0.1}
+dem:
+  species: [{name: a, density: 2500, youngs_modulus: 1.0e7, poisson_ratio: 0.3}]
+  fill: {region: {shape: box, min: [0, 0, 0], max: [0.1, 0.1, 0.1]}, count: 1, radius: 0.01}
+walls:
+  - shape: mesh
+    file: flat.stl
+)";
+  for (const std::string& text : {with_mesh_wall("flat.stl"), dem_case}) {
+    const CaseFile file(text);
+    file.add_file("flat.stl", ascii_stl(flat_triangles(), "flat"));
+    const InputError error = load_error(file);
+    EXPECT_EQ(error.location().key_path, "walls[0].file");
+    EXPECT_THAT(error.message(), HasSubstr("none of its 2 triangles has an area"));
+  }
+}
+
+TEST(CaseMesh, DegenerateTrianglesAmongGoodOnesAreDropped) {
+  geometry::TriangleSoup cube = box_triangles(Vec3::Zero(), Vec3::Constant(0.1));
+  const std::size_t good = cube.size();
+  for (const geometry::Triangle& flat : flat_triangles())
+    cube.push_back(flat);
+  const CaseFile file(with_mesh_wall("cube.stl"));
+  file.add_file("cube.stl", ascii_stl(cube, "cube"));
+  EXPECT_NO_THROW(io::load_case(file.path()));
+  EXPECT_EQ(geometry::checked_triangles(cube, Vec3::Zero()).size(), good);
 }
 
 TEST(CaseMesh, MalformedStlQuotesItsOwnLine) {

@@ -118,5 +118,31 @@ TEST(CaseOverrides, MalformedValueIsAnError) {
   EXPECT_THAT(error.message(), HasSubstr("cannot parse the value '[1, 2'"));
 }
 
+TEST(CaseOverrides, IndexTooLargeForANumberIsAnError) {
+  const InputError error =
+      load_error(kMinimal2D, {"fluid.regions[99999999999999999999].max=[1,2]"});
+  EXPECT_EQ(error.location().file, "--set");
+  EXPECT_THAT(error.message(), HasSubstr("list index [99999999999999999999] is too large"));
+}
+
+TEST(CaseOverrides, NullRemovesAKeySoAnotherCanTakeItsPlace) {
+  const io::Case loaded =
+      load_text(kMinimal2D, {"fluid.viscosity=null",
+                             "fluid.rheology={model: power_law, consistency: 0.1, "
+                             "flow_index: 1.5, viscosity_max: 10}"});
+  EXPECT_FALSE(loaded.resolved["fluid"].contains("viscosity"));
+  EXPECT_EQ(loaded.resolved["fluid"]["rheology"]["model"], "power_law");
+}
+
+TEST(CaseOverrides, NullOfAMissingKeyIsNoError) {
+  const io::Case loaded = load_text(kMinimal2D, {"sph.density.delta=~", "nothing.here="});
+  EXPECT_DOUBLE_EQ(loaded.time.end, 1.0);
+}
+
+TEST(CaseOverrides, NullOfAListItemIsAnError) {
+  const InputError error = load_error(kMinimal2D, {"fluid.regions[0]=null"});
+  EXPECT_THAT(error.message(), HasSubstr("null removes a key of a map"));
+}
+
 }  // namespace
 }  // namespace partimix::case_test

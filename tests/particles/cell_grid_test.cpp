@@ -2,10 +2,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <random>
 #include <utility>
 #include <vector>
 
+#include "core/error.hpp"
 #include "particles/cell_grid.hpp"
 
 namespace partimix {
@@ -108,10 +111,37 @@ TEST(CellGrid, IndexBoundKeepsExactlyTheLowerIndices) {
   EXPECT_EQ(found, expected);
 }
 
-TEST(CellGrid, RejectsPeriodicAxisShorterThanThreeCells) {
+TEST(CellGrid, RejectsPeriodicAxisShorterThanThreeCellsNamingTheMinimum) {
   Domain domain;
   domain.periodic = {true, false, false};
-  EXPECT_THROW(CellGrid(domain, 0.4), std::invalid_argument);
+  try {
+    CellGrid(domain, 0.4);
+    FAIL() << "a periodic axis of 2.5 radii was accepted";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.location().key_path, "domain.periodic");
+    EXPECT_NE(error.message().find("3 x 0.4 m = 1.2 m"), std::string::npos) << error.message();
+  }
+}
+
+// A domain of 1e6 radii per axis would need 1e18 cells of one radius: the cells grow instead,
+// and the neighbours found are still every pair within the radius.
+TEST(CellGrid, AHugeDomainGetsBoundedWiderCells) {
+  Domain domain;
+  domain.hi = Vec3(1e5, 1e5, 1e5);
+  const CellGrid grid(domain, 0.1);
+  const auto& cells = grid.cells_per_axis();
+  EXPECT_LE(static_cast<double>(cells[0]) * cells[1] * cells[2], double(1 << 24));
+  const std::vector<Vec3> x{Vec3(5.0, 5.0, 5.0), Vec3(5.05, 5.0, 5.0), Vec3(9e4, 9e4, 9e4)};
+  EXPECT_EQ(from_grid(domain, x, 0.1), (Pairs{{0, 0}, {0, 1}, {1, 0}, {1, 1}, {2, 2}}));
+}
+
+TEST(CellGrid, NonFinitePositionsGoToAnEdgeCell) {
+  Domain domain;
+  CellGrid grid(domain, 0.2);
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<Vec3> x{Vec3(inf, -inf, 0.5), Vec3(std::nan(""), 0.5, 0.5), Vec3(0.5, 0.5, 0.5)};
+  grid.build(x);
+  EXPECT_EQ(grid.cell_order().size(), 3u);
 }
 
 TEST(CellGrid, CellOrderIsAPermutation) {
