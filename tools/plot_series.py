@@ -3,14 +3,18 @@
 
 Reads OUTDIR/series.csv (header "name [unit]", one row per sample time) and writes one PNG
 per column against time, OUTDIR/plots/<name>.png, plus OUTDIR/plots/overview.png with every
-column as a subplot. Exit codes: 0 success, 1 plotting failed, 2 bad input (no series.csv,
-an empty one, no rows, or only a time column).
+column as a subplot. With OUTDIR/run.json the plots are titled with the case's name and
+description, and a column whose mean is a summary figure shows its averaging window (shaded)
+and the mean (dashed), marked "unreliable" when run.json gives the figure a caveat; one line
+per such plot is printed. Exit codes: 0 success, 1 plotting failed, 2 bad input (no
+series.csv, an empty one, no rows, or only a time column).
 
 Needs matplotlib and numpy (Debian: python3-matplotlib, python3-numpy for /usr/bin/python3).
 """
 
 import argparse
 import csv
+import json
 import math
 import re
 import sys
@@ -74,12 +78,46 @@ def file_stem(name):
     return re.sub(r"[^A-Za-z0-9_.-]", "_", name) or "column"
 
 
-def draw(axes, time, values, time_label, column):
+def read_summary(path):
+    """The title and averaging windows of run.json: (title, {figure: (from, to, mean, caveat)}).
+    A time average is the figure named like its column; its window is that of the longest
+    prefix P of its name with figures P + "average_from" and P + "average_to". No title and no
+    windows when there is no readable run.json."""
+    try:
+        run = json.loads(path.read_text())
+    except (OSError, ValueError):
+        return "", {}
+    case = run.get("case") if isinstance(run.get("case"), dict) else {}
+    title = " - ".join(str(part) for part in (case.get("name"), case.get("description")) if part)
+    figures = run.get("figures") if isinstance(run.get("figures"), dict) else {}
+    caveats = run.get("caveats") if isinstance(run.get("caveats"), dict) else {}
+    prefixes = [key[: -len("average_from")] for key in figures if key.endswith("average_from")
+                and key[: -len("average_from")] + "average_to" in figures]
+    windows = {}
+    for name, mean in figures.items():
+        owners = [prefix for prefix in prefixes if name.startswith(prefix)]
+        if not owners or "average_" in name or not isinstance(mean, (int, float)):
+            continue
+        prefix = max(owners, key=len)
+        windows[name] = (figures[prefix + "average_from"], figures[prefix + "average_to"], mean,
+                         caveats.get(name, ""))
+    return title, windows
+
+
+def draw(axes, time, values, time_label, column, window=None):
     name, unit = column
     axes.plot(time, values, marker="." if len(time) < 50 else None)
     axes.set_xlabel(time_label)
     axes.set_ylabel(f"{name} [{unit}]")
     axes.grid(True, alpha=0.3)
+    if window:
+        start, end, mean, caveat = window
+        label = f"mean {mean:.4g} over t = {start:.4g} to {end:.4g} s"
+        if caveat:
+            label += " (unreliable)"
+        axes.axvspan(start, end, color="tab:orange", alpha=0.15)
+        axes.hlines(mean, start, end, colors="tab:orange", linestyles="dashed", label=label)
+        axes.legend(fontsize="small")
 
 
 def load_pyplot():
@@ -92,11 +130,12 @@ def load_pyplot():
     return plt
 
 
-def plot_all(columns, data, plots):
+def plot_all(columns, data, plots, summary=("", {})):
     """Writes one PNG per non-time column and the overview; returns the files written."""
     import numpy as np
 
     plt = load_pyplot()
+    title, windows = summary
     t_index = time_index(columns)
     time = np.asarray(data[t_index])
     time_label = "{} [{}]".format(*columns[t_index])
@@ -105,25 +144,35 @@ def plot_all(columns, data, plots):
     written = []
     for column, values in series:
         figure, axes = plt.subplots(figsize=(6.4, 4.0))
-        draw(axes, time, values, time_label, column)
+        window = windows.get(column[0])
+        draw(axes, time, values, time_label, column, window)
+        if title:
+            axes.set_title(title, fontsize="medium")
         written.append(plots / f"{file_stem(column[0])}.png")
         save(plt, figure, written[-1], dpi=120)
+        if window:
+            print(f"plot_series: {written[-1].name}: averaging window t = {window[0]:.4g} to "
+                  f"{window[1]:.4g} s, mean {window[2]:.4g}"
+                  + (" (unreliable)" if window[3] else ""))
     written.append(plots / "overview.png")
-    save(plt, overview(plt, series, time, time_label), written[-1], dpi=100)
+    save(plt, overview(plt, series, time, time_label, summary), written[-1], dpi=100)
     return written
 
 
-def overview(plt, series, time, time_label):
+def overview(plt, series, time, time_label, summary):
     """One figure with every series as a subplot, in two columns when there are many."""
+    title, windows = summary
     ncols = 1 if len(series) <= 3 else 2
     nrows = math.ceil(len(series) / ncols)
     figure, grid = plt.subplots(nrows, ncols, figsize=(6.4 * ncols, 2.8 * nrows),
                                 squeeze=False, sharex=True)
     cells = grid.ravel()
     for axes, (column, values) in zip(cells, series):
-        draw(axes, time, values, time_label, column)
+        draw(axes, time, values, time_label, column, windows.get(column[0]))
     for axes in cells[len(series):]:
         axes.set_visible(False)
+    if title:
+        figure.suptitle(title)
     return figure
 
 
@@ -152,7 +201,10 @@ def main(argv):
         print(f"plot_series: {error}", file=sys.stderr)
         return EXIT_BAD_INPUT
     try:
-        written = plot_all(columns, data, args.outdir / "plots")
+        summary = read_summary(args.outdir / "run.json")
+        if summary[0]:
+            print(f"plot_series: title '{summary[0]}'")
+        written = plot_all(columns, data, args.outdir / "plots", summary)
     except ImportError as error:
         print(f"plot_series: {error}; install matplotlib and numpy for {sys.executable} "
               "(Debian: python3-matplotlib python3-numpy)", file=sys.stderr)

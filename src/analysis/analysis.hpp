@@ -16,6 +16,9 @@
 
 namespace partimix::analysis {
 
+// Why figures are unreliable: figure name -> reason (run.json "caveats").
+using Caveats = std::map<std::string, std::string>;
+
 struct Column {
   std::string name;
   std::string unit;
@@ -36,6 +39,9 @@ class Analysis {
   virtual bool needs_body_forces() const { return false; }
   // Adds the analysis' summary figures (name -> value) for run.json's "figures".
   virtual void add_figures(std::map<std::string, double>& /*figures*/) const {}
+  // Adds, for each of its figures that is not what it claims to be, why (figure name -> reason):
+  // a time average whose window is shorter than asked or takes in the start-up ramp.
+  virtual void add_caveats(Caveats& /*caveats*/) const {}
 };
 
 // The fluid's scales for Reynolds numbers (docs/power.md): a Newtonian fluid has K = mu, n = 1.

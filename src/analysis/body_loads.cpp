@@ -61,4 +61,9 @@ void BodyLoads::add_figures(std::map<std::string, double>& figures) const {
                        body_.average_revolutions);
 }
 
+void BodyLoads::add_caveats(Caveats& caveats) const {
+  history_.add_caveats(caveats, revolution_period(body_.motion_config), body_.average_revolutions,
+                       body_.motion_config.ramp_time);
+}
+
 }  // namespace partimix::analysis

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <fmt/format.h>
+
 namespace partimix::analysis {
 
 void SampledSignal::add(double time, double value) {
@@ -46,6 +48,28 @@ void ColumnHistory::add_figures(std::map<std::string, double>& figures, const st
   figures[prefix + "average_from"] = window.from;
   figures[prefix + "average_to"] = window.to;
   figures[prefix + "average_revolutions"] = window.revolutions;
+}
+
+void ColumnHistory::add_caveats(std::map<std::string, std::string>& caveats, double period,
+                                double revolutions, double ramp_time) const {
+  if (signals_.empty() || signals_.front().empty())
+    return;
+  const AveragingWindow window = averaging_window(
+      signals_.front().first_time(), signals_.front().last_time(), period, revolutions);
+  const bool short_window = period > 0.0 && window.revolutions < revolutions * (1.0 - 1e-9);
+  const bool in_ramp = window.from < ramp_time;
+  if (!short_window && !in_ramp)
+    return;
+  std::string reason = fmt::format("averaged over t = {:.4g} to {:.4g} s", window.from, window.to);
+  if (short_window)
+    reason +=
+        fmt::format(", {:.3g} of the {:.3g} revolutions asked", window.revolutions, revolutions);
+  if (in_ramp)
+    reason += fmt::format(", which takes in the start-up ramp (ramp_time {:.4g} s)", ramp_time);
+  reason += fmt::format("; run to at least t = {:.4g} s for a full window after the ramp",
+                        ramp_time + revolutions * period);
+  for (const std::string& name : names_)
+    caveats[name] = reason;
 }
 
 }  // namespace partimix::analysis

@@ -38,6 +38,10 @@ class ColumnHistory {
   void add(double time, std::span<const double> values);
   void add_figures(std::map<std::string, double>& figures, const std::string& prefix, double period,
                    double revolutions) const;
+  // A caveat on each mean whose window holds fewer than `revolutions` periods (the run was
+  // shorter) or starts before `ramp_time` (it takes in the start-up ramp).
+  void add_caveats(std::map<std::string, std::string>& caveats, double period, double revolutions,
+                   double ramp_time) const;
 
  private:
   std::vector<std::string> names_;

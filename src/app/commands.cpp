@@ -6,6 +6,7 @@
 #include <optional>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <spdlog/spdlog.h>
 
 #include "app/checkpoint_match.hpp"
@@ -39,9 +40,19 @@ void print_warnings(const Simulation& simulation) {
     fmt::print(stderr, "warning: {}\n", warning);
 }
 
-void print_figures(const std::map<std::string, double>& figures) {
-  for (const auto& [name, value] : figures)
-    fmt::print(stderr, "  {:<24} {:.6g}\n", name, value);
+// The figures; one with a caveat is marked and the reasons follow, once each.
+void print_figures(const std::map<std::string, double>& figures, const analysis::Caveats& caveats) {
+  std::map<std::string, std::vector<std::string>> reasons;
+  for (const auto& [name, value] : figures) {
+    const auto caveat = caveats.find(name);
+    const bool marked = caveat != caveats.end();
+    fmt::print(stderr, "  {:<24} {:.6g}{}\n", name, value,
+               marked ? "  (unreliable, see below)" : "");
+    if (marked)
+      reasons[caveat->second].push_back(name);
+  }
+  for (const auto& [reason, names] : reasons)
+    fmt::print(stderr, "warning: {}: {}\n", fmt::join(names, ", "), reason);
 }
 
 void print_summary(const io::RunSummary& summary) {
@@ -133,7 +144,7 @@ int run_command(const RunArguments& arguments) {
                        fmt::format("the checkpoint does not fit the case: {}", error.what()));
     }
     print_summary(summary);
-    print_figures(runner.figures());
+    print_figures(runner.figures(), runner.caveats());
     return exit_code_of(summary.status);
   } catch (const InputError& error) {
     monitor.finish();

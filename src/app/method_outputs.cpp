@@ -63,6 +63,7 @@ MethodOutputs::MethodOutputs(const io::Case& the_case, std::size_t m,
   };
   for (std::size_t k = 0; k < analyses_.size(); ++k)
     claim("the built-in analyses", *analyses_[k], "");
+  load_caveats_.assign(analyses_.size(), "");
   const io::MethodSection& section = *the_case.methods[m].section;
   for (const io::AnalysisSpec& spec : the_case.analyses) {
     if (spec.method != name_)
@@ -71,6 +72,9 @@ MethodOutputs::MethodOutputs(const io::Case& the_case, std::size_t m,
         spec.type, options_of(spec, the_case, section, method.bodies.get())));
     prefixes_.push_back(spec.name.empty() ? "" : spec.name + ".");
     claim(spec.key, *analyses_.back(), prefixes_.back());
+    const auto caveat = method.load_caveats.find(spec.body);
+    const bool of_loads = spec.type == "body_loads" || spec.type == "power_number";
+    load_caveats_.push_back(of_loads && caveat != method.load_caveats.end() ? caveat->second : "");
   }
   for (const auto& a : analyses_) {
     column_count_ += a->columns().size();
@@ -115,6 +119,24 @@ void MethodOutputs::add_figures(std::map<std::string, double>& figures, bool pre
     analyses_[k]->add_figures(own);
     for (const auto& [figure, value] : own)
       figures[(prefixed ? name_ + "." : "") + prefixes_[k] + figure] = value;
+  }
+}
+
+// The analyses' own caveats, then that of the body whose loads they measure, for all figures.
+void MethodOutputs::add_caveats(analysis::Caveats& caveats, bool prefixed) const {
+  for (std::size_t k = 0; k < analyses_.size(); ++k) {
+    analysis::Caveats own;
+    analyses_[k]->add_caveats(own);
+    if (!load_caveats_[k].empty()) {
+      std::map<std::string, double> figures;
+      analyses_[k]->add_figures(figures);
+      for (const auto& entry : figures) {
+        std::string& reason = own[entry.first];
+        reason = reason.empty() ? load_caveats_[k] : load_caveats_[k] + "; " + reason;
+      }
+    }
+    for (const auto& [figure, reason] : own)
+      caveats[(prefixed ? name_ + "." : "") + prefixes_[k] + figure] = reason;
   }
 }
 

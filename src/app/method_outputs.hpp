@@ -34,6 +34,9 @@ class MethodOutputs {
   // Gives the analyses the values they sampled before a checkpoint (Analysis::replay).
   void replay(double time, std::span<const double> values);
   void add_figures(std::map<std::string, double>& figures, bool prefixed) const;
+  // Why some of those figures are unreliable (Analysis::add_caveats, and the load caveats of the
+  // method's bodies for the analyses of their loads), under the same names.
+  void add_caveats(analysis::Caveats& caveats, bool prefixed) const;
 
   // The frame series: starts the collection afresh, or with the frames before a checkpoint.
   void open_frames(const std::filesystem::path& output_dir, std::vector<io::PvdEntry> entries);
@@ -46,7 +49,8 @@ class MethodOutputs {
   std::string name_;
   const io::MethodInstance& method_;
   std::vector<std::unique_ptr<analysis::Analysis>> analyses_;
-  std::vector<std::string> prefixes_;  // parallel to analyses_: "<name>." or empty
+  std::vector<std::string> prefixes_;      // parallel to analyses_: "<name>." or empty
+  std::vector<std::string> load_caveats_;  // parallel to analyses_: its body's, or empty
   std::size_t column_count_ = 0;
   bool needs_body_forces_ = false;
   std::unique_ptr<io::PvdWriter> collection_;

@@ -212,13 +212,18 @@ void Runner::write_metadata(const io::RunSummary& summary) const {
   nlohmann::json figures = nlohmann::json::object();
   for (const auto& [name, value] : figures_)
     figures[name] = value;
+  nlohmann::json caveats = nlohmann::json::object();
+  for (const auto& [name, reason] : caveats_)
+    caveats[name] = reason;
   nlohmann::json content{{"partimix_version", PARTIMIX_VERSION},
                          {"case_file", case_.file},
                          {"case", case_.resolved},
                          {"methods", methods},
                          {"derived", parameters},
+                         {"warnings", simulation_.warnings},
                          {"run", io::to_json(summary)},
-                         {"figures", figures}};
+                         {"figures", figures},
+                         {"caveats", caveats}};
   if (!last_checkpoint_.empty())
     content["checkpoint"] = last_checkpoint_.lexically_relative(options_.output_dir).string();
   io::write_run_json(options_.output_dir / "run.json", content);
@@ -348,6 +353,8 @@ void Runner::finish(io::RunSummary& summary) {
   summary.wall_seconds = wall_seconds();
   for (const MethodOutputs& outputs : outputs_)
     outputs.add_figures(figures_, !case_.single_method());
+  for (const MethodOutputs& outputs : outputs_)
+    outputs.add_caveats(caveats_, !case_.single_method());
   write_metadata(summary);
 }
 

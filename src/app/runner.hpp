@@ -46,6 +46,8 @@ class Runner {
   // The analyses' summary figures (time averages, final values) of the last run, also in
   // run.json under "figures".
   const std::map<std::string, double>& figures() const { return figures_; }
+  // Why some figures are unreliable (MethodOutputs::add_caveats), also in run.json "caveats".
+  const analysis::Caveats& caveats() const { return caveats_; }
 
  private:
   void start_fresh();
@@ -71,6 +73,7 @@ class Runner {
   std::vector<double> row_;
   RunState state_;
   std::map<std::string, double> figures_;
+  analysis::Caveats caveats_;
   std::filesystem::path last_checkpoint_;
   Stopwatch wall_;  // since this process started the run
 };

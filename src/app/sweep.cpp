@@ -150,7 +150,7 @@ SweepTable gather(const Sweep& sweep, const std::vector<std::optional<int>>& cod
     table.keys.push_back(axis.key);
   for (std::size_t i = 0; i < sweep.points.size(); ++i) {
     const RunRecord record =
-        codes[i] ? read_run_record(sweep.dir / run_name(i)) : RunRecord{"skipped", {}};
+        codes[i] ? read_run_record(sweep.dir / run_name(i)) : RunRecord{"skipped", {}, {}};
     table.rows.push_back({run_name(i), sweep.points[i], record});
   }
   return table;
@@ -166,12 +166,29 @@ int exit_code_of(const SweepTable& table, const std::vector<std::optional<int>>&
   return all_completed ? kExitSuccess : kExitRunFailed;
 }
 
+// The Np-Re fit takes every run's Np and Re: say which of them carry a caveat (an average not
+// over a full window, a body the fluid sees through), so that a slope of such runs is not read
+// as a result.
+void warn_of_unreliable_fit(const SweepTable& table) {
+  for (const SweepRow& row : table.rows) {
+    for (const char* figure : {"Np", "Re"}) {
+      const auto caveat = row.record.caveats.find(figure);
+      if (caveat != row.record.caveats.end())
+        fmt::print(stderr, "warning: the Np-Re fit uses {} of {}, which is unreliable: {}\n",
+                   figure, row.run, caveat->second);
+    }
+  }
+}
+
 void write_results(const Sweep& sweep, const SweepTable& table) {
   write_sweep_csv(sweep.dir / "sweep.csv", table);
   fmt::print(stderr, "\n");
   print_sweep_table(stderr, table);
   fmt::print(stderr, "table: {}\n", (sweep.dir / "sweep.csv").string());
-  if (can_plot_np_re(table) && plot_np_re(sweep.dir) != kExitSuccess)
+  if (!can_plot_np_re(table))
+    return;
+  warn_of_unreliable_fit(table);
+  if (plot_np_re(sweep.dir) != kExitSuccess)
     fmt::print(stderr, "warning: the Np-Re plot failed (tools/plot_sweep.py)\n");
 }
 

@@ -16,6 +16,7 @@ std::vector<std::string> header(const SweepTable& table, const std::vector<std::
   cells.insert(cells.end(), table.keys.begin(), table.keys.end());
   cells.push_back("status");
   cells.insert(cells.end(), names.begin(), names.end());
+  cells.push_back("unreliable");
   return cells;
 }
 
@@ -30,6 +31,12 @@ std::vector<std::string> row_cells(const SweepRow& row, const std::vector<std::s
                         ? std::string()
                         : fmt::format(fmt::runtime(number_format), found->second));
   }
+  std::string unreliable;
+  for (const std::string& name : names) {
+    if (row.record.caveats.contains(name))
+      unreliable += (unreliable.empty() ? "" : " ") + name;
+  }
+  cells.push_back(unreliable);
   return cells;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include <fmt/format.h>
 
@@ -86,63 +87,120 @@ Vec3 probe_point(const Vec3& x, const Shape& shape, const Domain& domain) {
   return probe;
 }
 
-template <class Keep>
-std::vector<Vec3> sample(const LatticeBox& box, double spacing, const LatticeLimits& limits,
-                         Keep&& keep) {
-  const double visits = box.count[0] * box.count[1] * box.count[2];
-  if (!(visits <= limits.visits)) {
-    throw InputError({}, fmt::format("at spacing {:.6g} m the lattice spans {:.3g} points, more "
-                                     "than limits.lattice_points = {:.3g}",
-                                     spacing, visits, limits.visits));
+// Whether `x` lies within the box's extent in x and y (half a spacing beyond its points).
+bool within_box_xy(const LatticeBox& box, double spacing, const Vec3& x) {
+  for (int axis = 0; axis < 2; ++axis) {
+    const double lo = box.start[axis] - 0.5 * spacing;
+    const double hi = box.start[axis] + (box.count[axis] - 0.5) * spacing;
+    if (x[axis] < lo || x[axis] >= hi)
+      return false;
   }
+  return true;
+}
+
+// The largest distance from `centre` to a corner of the box in x and y.
+double reach_xy(const LatticeBox& box, double spacing, const Vec3& centre) {
+  double reach = 0.0;
+  for (const double x :
+       {box.start[0] - 0.5 * spacing, box.start[0] + (box.count[0] - 0.5) * spacing}) {
+    for (const double y :
+         {box.start[1] - 0.5 * spacing, box.start[1] + (box.count[1] - 0.5) * spacing}) {
+      reach = std::max(reach, std::hypot(x - centre.x(), y - centre.y()));
+    }
+  }
+  return reach;
+}
+
+// Calls visit(x) for each point of the box's Cartesian lattice, or of the rings about
+// options.polar_centre within the box; `visits` is how many that will be.
+template <class Visit>
+void for_each_point(const LatticeBox& box, double spacing, const LatticeOptions& options,
+                    Visit&& visit) {
   const auto count = [&box](int axis) { return static_cast<long>(box.count[axis]); };
-  std::vector<Vec3> points;
   for (long k = 0; k < count(2); ++k) {
-    for (long j = 0; j < count(1); ++j) {
-      for (long i = 0; i < count(0); ++i) {
-        const Vec3 x(box.start[0] + static_cast<double>(i) * spacing,
-                     box.start[1] + static_cast<double>(j) * spacing,
-                     box.start[2] + static_cast<double>(k) * spacing);
-        if (!keep(x))
-          continue;
-        if (static_cast<double>(points.size()) >= limits.points) {
-          throw InputError({}, fmt::format("at spacing {:.6g} m it holds more than "
-                                           "limits.particles = {:.3g} particles",
-                                           spacing, limits.points));
-        }
-        points.push_back(x);
+    const double z = box.start[2] + static_cast<double>(k) * spacing;
+    if (!options.polar_centre) {
+      for (long j = 0; j < count(1); ++j)
+        for (long i = 0; i < count(0); ++i)
+          visit(Vec3(box.start[0] + static_cast<double>(i) * spacing,
+                     box.start[1] + static_cast<double>(j) * spacing, z));
+      continue;
+    }
+    const Vec3& centre = *options.polar_centre;
+    const auto rings = static_cast<long>(std::ceil(reach_xy(box, spacing, centre) / spacing));
+    for (long ring = 0; ring < rings; ++ring) {
+      const double radius = (static_cast<double>(ring) + 0.5) * spacing;
+      const long around = std::max(1L, std::lround(2.0 * std::numbers::pi * radius / spacing));
+      const double stagger = 0.5 * static_cast<double>(ring % 2);
+      for (long a = 0; a < around; ++a) {
+        const double angle = 2.0 * std::numbers::pi * (static_cast<double>(a) + stagger) /
+                             static_cast<double>(around);
+        const Vec3 x(centre.x() + radius * std::cos(angle), centre.y() + radius * std::sin(angle),
+                     z);
+        if (within_box_xy(box, spacing, x))
+          visit(x);
       }
     }
   }
+}
+
+// The points for_each_point visits, about: the box's, or the disc's of the rings.
+double visits_of(const LatticeBox& box, double spacing, const LatticeOptions& options) {
+  if (!options.polar_centre)
+    return box.count[0] * box.count[1] * box.count[2];
+  const double rings = std::ceil(reach_xy(box, spacing, *options.polar_centre) / spacing);
+  return std::numbers::pi * rings * rings * box.count[2];
+}
+
+template <class Keep>
+std::vector<Vec3> sample(const LatticeBox& box, double spacing, const LatticeOptions& options,
+                         Keep&& keep) {
+  const double visits = visits_of(box, spacing, options);
+  if (!(visits <= options.visits)) {
+    throw InputError({}, fmt::format("at spacing {:.6g} m the lattice spans {:.3g} points, more "
+                                     "than limits.lattice_points = {:.3g}",
+                                     spacing, visits, options.visits));
+  }
+  std::vector<Vec3> points;
+  for_each_point(box, spacing, options, [&](const Vec3& x) {
+    if (!keep(x))
+      return;
+    if (static_cast<double>(points.size()) >= options.points) {
+      throw InputError({}, fmt::format("at spacing {:.6g} m it holds more than "
+                                       "limits.particles = {:.3g} particles",
+                                       spacing, options.points));
+    }
+    points.push_back(x);
+  });
   return points;
 }
 
 }  // namespace
 
 std::vector<Vec3> fill(const Shape& shape, double spacing, const Domain& domain,
-                       const LatticeLimits& limits) {
+                       const LatticeOptions& options) {
   const LatticeBox box = lattice_box(shape, spacing, 0.0, domain);
-  return sample(box, spacing, limits, [&](const Vec3& x) {
+  return sample(box, spacing, options, [&](const Vec3& x) {
     return shape.signed_distance(probe_point(x, shape, domain)) < 0.0;
   });
 }
 
 std::vector<Vec3> wall_layers(const Shape& shape, double spacing, int layers,
                               const std::vector<Face>& open_faces, const Domain& domain,
-                              const LatticeLimits& limits) {
+                              const LatticeOptions& options) {
   const double thickness = layers * spacing;
   const LatticeBox box = lattice_box(shape, spacing, thickness, domain);
-  return sample(box, spacing, limits, [&](const Vec3& x) {
+  return sample(box, spacing, options, [&](const Vec3& x) {
     const double distance = shape.signed_distance(probe_point(x, shape, domain));
     return distance > 0.0 && distance < thickness && !shape.beyond_open_end(x, open_faces);
   });
 }
 
 std::vector<Vec3> inside_layers(const Shape& shape, double spacing, int layers,
-                                const Domain& domain, const LatticeLimits& limits) {
+                                const Domain& domain, const LatticeOptions& options) {
   const double thickness = layers * spacing;
   const LatticeBox box = lattice_box(shape, spacing, 0.0, domain);
-  return sample(box, spacing, limits, [&](const Vec3& x) {
+  return sample(box, spacing, options, [&](const Vec3& x) {
     const double distance = shape.signed_distance(x);
     return distance <= 0.0 && distance > -thickness;
   });

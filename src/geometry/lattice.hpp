@@ -12,6 +12,7 @@
 // that the layers behind a plane sit (j + 1/2) spacings from it; where both are, the lattice is
 // the domain's: domain.lo + (i + 1/2) spacing.
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "core/vec.hpp"
@@ -21,10 +22,19 @@
 
 namespace partimix::geometry {
 
-// What a sampler may cost: the lattice points it visits (the box it spans) and those it keeps.
-// Past either it throws InputError (without a location: the caller knows which key asked) before
-// it allocates, whatever the shape's size: the case's limits (io/size_limits.hpp) come here.
-struct LatticeLimits {
+// How the points are laid and what a sampler may cost.
+// - polar_centre: when given, the points lie on rings about the axis through it parallel to z
+//   (in 2D: circles in the plane), ring k at radius (k + 1/2) spacing holding
+//   round(2 pi r_k / spacing) points evenly spread from angle 0 (odd rings turned by half a
+//   step, so that neighbouring rings interleave); along z the lattice stays
+//   Cartesian. A circle about the centre whose radius is a whole number of spacings then lies
+//   half a spacing from the rings on both sides, so that curved walls are smooth. Only the
+//   points within the Cartesian lattice box (below) are taken.
+// - visits, points: the lattice points a sampler may visit (the box it spans) and keep. Past
+//   either it throws InputError (without a location: the caller knows which key asked) before
+//   it allocates, whatever the shape's size: the case's limits (io/size_limits.hpp) come here.
+struct LatticeOptions {
+  std::optional<Vec3> polar_centre;
   double visits = 1.0e9;
   double points = 1.0e9;
 };
@@ -32,19 +42,19 @@ struct LatticeLimits {
 // Points strictly inside the shape (signed distance < 0). Along periodic axes of the domain
 // the lattice spans the whole period.
 std::vector<Vec3> fill(const Shape& shape, double spacing, const Domain& domain,
-                       const LatticeLimits& limits = {});
+                       const LatticeOptions& options = {});
 
 // Points outside the shape within `layers` spacings of its surface, except beyond its open ends
 // (Shape::beyond_open_end: by default the open faces of its bounding box) and along the periodic
 // axes of the domain (which carry no wall).
 std::vector<Vec3> wall_layers(const Shape& shape, double spacing, int layers,
                               const std::vector<Face>& open_faces, const Domain& domain,
-                              const LatticeLimits& limits = {});
+                              const LatticeOptions& options = {});
 
 // The layers of a solid body (an impeller): points inside the shape within `layers` spacings of
 // its surface (signed distance in (-layers spacing, 0]), on the lattice of fill(). Unlike a
 // container, a body is not extended along periodic axes: it is the shape as given.
 std::vector<Vec3> inside_layers(const Shape& shape, double spacing, int layers,
-                                const Domain& domain, const LatticeLimits& limits = {});
+                                const Domain& domain, const LatticeOptions& options = {});
 
 }  // namespace partimix::geometry

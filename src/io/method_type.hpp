@@ -3,6 +3,7 @@
 // "Methods"): the sections of the case it reads, how it reads them, and how it builds its solver
 // from a case. Each method folder defines one MethodType; io/method_registry.cpp lists them by
 // name, and neither the case loader nor the app names a concrete method.
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -24,6 +25,9 @@ struct MethodInstance {
   std::unique_ptr<geometry::MovingBodies> bodies;
   std::unique_ptr<Solver> solver;
   std::vector<std::string> warnings;  // about the case as built, e.g. a see-through solid wall
+  // Bodies (wall indices) whose loads are unreliable, and why: the figures of the analyses of
+  // their loads carry it as a caveat.
+  std::map<int, std::string> load_caveats;
 };
 
 struct BuildOptions {

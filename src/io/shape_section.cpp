@@ -24,7 +24,8 @@ constexpr double kPlaneHalfThickness = 1.0;
 void require_3d(const Reader& item, const std::string& shape, int dimensions) {
   if (dimensions != 3) {
     throw item.error("shape", fmt::format("{} needs dimensions: 3, this case has {}; "
-                                          "in 2D: box, plate (and plane for a wall)",
+                                          "in 2D: box, cylinder (a circle), plate (and plane "
+                                          "for a wall)",
                                           shape, dimensions));
   }
 }
@@ -40,10 +41,17 @@ ShapePtr read_box(Reader& item, int dimensions) {
   return std::make_shared<geometry::Box>(lo, hi);
 }
 
+// A cylinder about a z-parallel axis from its base centre up by `height`; in 2D a circle about
+// `center` (the plane's z range, and `height` is an error).
 ShapePtr read_cylinder(Reader& item, int dimensions) {
-  require_3d(item, "cylinder", dimensions);
-  const Vec3 base_centre = item.vector("center", dimensions);
+  Vec3 base_centre = item.vector("center", dimensions);
   const double radius = item.required<double>("radius", kPositive);
+  if (dimensions == 2) {
+    if (item.contains("height"))
+      throw item.error("height", "applies to a cylinder in 3D only (in 2D it is a circle)");
+    base_centre.z() = -kPlaneHalfThickness;
+    return std::make_shared<geometry::Cylinder>(base_centre, radius, 2.0 * kPlaneHalfThickness);
+  }
   const double height = item.required<double>("height", kPositive);
   return std::make_shared<geometry::Cylinder>(base_centre, radius, height);
 }

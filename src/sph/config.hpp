@@ -4,6 +4,8 @@
 #include <optional>
 #include <string>
 
+#include "core/vec.hpp"
+
 namespace partimix::sph {
 
 struct TimeStepFactors {
@@ -27,7 +29,7 @@ struct Config {
   std::string equation_of_state = "tait";  // tait | linear
   double tait_gamma = 7.0;
   std::optional<double> sound_speed;   // c0 [m/s]; when absent, mach_factor * max_velocity
-  std::optional<double> max_velocity;  // [m/s]; when absent, sqrt(2 |g| H) of the fluid
+  std::optional<double> max_velocity;  // [m/s]; when absent, 2 sqrt(|g| H) of the fluid
   double mach_factor = 10.0;
   double artificial_viscosity = 0.0;          // Monaghan alpha; 0: off
   bool laminar_viscosity = true;              // laminar viscous term with the fluid's viscosity
@@ -39,6 +41,9 @@ struct Config {
   bool negative_wall_pressure = false;  // false: p_w = max(p_w, 0) (free-surface flows)
   TimeStepFactors time_step;
   int sort_interval = 20;  // re-sort particles by cell every N steps
+  // sph.lattice: particles on rings about this point's z-parallel axis (geometry/lattice.hpp);
+  // absent: the Cartesian lattice.
+  std::optional<Vec3> polar_centre;
 
   double smoothing_length() const { return smoothing_ratio * spacing; }
 };

@@ -53,12 +53,15 @@ bool blocked_by(const io::WallSpec& wall, const Vec3& x, double spacing) {
   const Vec3 lo = wall.shape->lower().array() - clearance;
   const Vec3 hi = wall.shape->upper().array() + clearance;
   const bool near_box = (x.array() > lo.array()).all() && (x.array() < hi.array()).all();
-  return near_box && wall.shape->signed_distance(x) < clearance;
+  // A point half a spacing from the surface (the lattice's own phase, up to round-off) is kept.
+  return near_box && wall.shape->signed_distance(x) < clearance * (1.0 - 1e-9);
 }
 
-// The case's limits on a lattice that adds to the `existing` particles of the store.
-geometry::LatticeLimits limits_after(const io::Case& the_case, std::size_t existing) {
-  return {the_case.limits.lattice_points,
+// The lattice of the case (sph.lattice), with the case's limits for one that adds to the
+// `existing` particles of the store.
+geometry::LatticeOptions lattice_after(const io::Case& the_case, const Config& config,
+                                       std::size_t existing) {
+  return {config.polar_centre, the_case.limits.lattice_points,
           the_case.limits.particles - static_cast<double>(existing)};
 }
 
@@ -73,12 +76,13 @@ std::vector<Vec3> located(const io::Case& the_case, const std::string& key, Samp
 }
 
 // The fluid lattice points of region `r`, less those that a solid wall blocks.
-std::vector<Vec3> fluid_points(const io::Case& the_case, double spacing, const FluidSpec& fluid,
-                               std::size_t r, std::size_t existing) {
+std::vector<Vec3> fluid_points(const io::Case& the_case, const Config& config,
+                               const FluidSpec& fluid, std::size_t r, std::size_t existing) {
+  const double spacing = config.spacing;
   const std::string key = fmt::format("fluid.regions[{}]", r);
   std::vector<Vec3> points = located(the_case, key, [&] {
     return geometry::fill(*fluid.regions[r].shape, spacing, the_case.domain,
-                          limits_after(the_case, existing));
+                          lattice_after(the_case, config, existing));
   });
   if (points.empty()) {
     throw io::case_error(the_case, key,
@@ -94,19 +98,21 @@ std::vector<Vec3> fluid_points(const io::Case& the_case, double spacing, const F
 }
 
 // The wall particles of wall `w`: layers inside a solid body, outside a container.
-std::vector<Vec3> wall_points(const io::Case& the_case, std::size_t w, double spacing, int layers,
+std::vector<Vec3> wall_points(const io::Case& the_case, const Config& config, std::size_t w,
                               std::size_t existing) {
   const io::WallSpec& wall = the_case.walls[w];
   const std::string key = fmt::format("walls[{}]", w);
-  const geometry::LatticeLimits limits = limits_after(the_case, existing);
+  const geometry::LatticeOptions lattice = lattice_after(the_case, config, existing);
+  const double spacing = config.spacing;
+  const int layers = wall_layers_for(config);
   if (!wall.solid) {
     return located(the_case, key, [&] {
       return geometry::wall_layers(*wall.shape, spacing, layers, wall.open_faces, the_case.domain,
-                                   limits);
+                                   lattice);
     });
   }
   std::vector<Vec3> points = located(the_case, key, [&] {
-    return geometry::inside_layers(*wall.shape, spacing, layers, the_case.domain, limits);
+    return geometry::inside_layers(*wall.shape, spacing, layers, the_case.domain, lattice);
   });
   if (points.empty()) {
     throw io::case_error(the_case, key,
@@ -116,12 +122,13 @@ std::vector<Vec3> wall_points(const io::Case& the_case, std::size_t w, double sp
   return points;
 }
 
-// A warning when solid wall `w` (its particles `points`) is thinner than the kernel support 2h
-// everywhere (docs/geometry-meshes.md, "Bodies thinner than the kernel support"). Its thickness
-// is taken as 2 d + dp, d the depth of its deepest particle below the surface: exact for a slab
-// whose middle holds a lattice plane, within a spacing otherwise.
-std::optional<std::string> see_through_warning(const io::Case& the_case, const Config& config,
-                                               std::size_t w, const std::vector<Vec3>& points) {
+// Why the loads on solid wall `w` (its particles `points`) are unreliable, when it is thinner
+// than the kernel support 2h everywhere (docs/geometry-meshes.md, "Bodies thinner than the
+// kernel support"): the fluid on its two sides interacts through it. Its thickness is taken as
+// 2 d + dp, d the depth of its deepest particle below the surface: exact for a slab whose
+// middle holds a lattice plane, within a spacing otherwise.
+std::optional<std::string> see_through(const io::Case& the_case, const Config& config,
+                                       std::size_t w, const std::vector<Vec3>& points) {
   const io::WallSpec& wall = the_case.walls[w];
   if (!wall.solid)
     return std::nullopt;
@@ -134,11 +141,11 @@ std::optional<std::string> see_through_warning(const io::Case& the_case, const C
   if (thickness >= support - 1e-9 * spacing)
     return std::nullopt;
   return fmt::format(
-      "{}: walls[{}]: this solid wall is about {:.3g} m thick at its thickest, less than the "
-      "kernel support 2h = {:.3g} m: the fluid on its two sides interacts through it, so fluid "
-      "leaks across it and the loads on it come out too small; make it at least 2h thick or "
-      "sph.spacing at most {:.3g} m",
-      the_case.file, w, thickness, support, spacing * thickness / support);
+      "walls[{}] is about {:.3g} m thick at its thickest, less than the kernel support 2h = "
+      "{:.3g} m: the fluid on its two sides interacts through it, so fluid leaks across it and "
+      "the loads on it come out too small; make it at least 2h thick or sph.spacing at most "
+      "{:.3g} m",
+      w, thickness, support, spacing * thickness / support);
 }
 
 // Tag 1 for the tracer fluid (fluid.tracer), 0 for the rest: the mixing analyses and the colour
@@ -165,35 +172,33 @@ int wall_layers_for(const Config& config) {
   return static_cast<int>(std::ceil(kernel_reach(config) - 1e-9));
 }
 
-std::unique_ptr<geometry::MovingBodies> generate_particles(const io::Case& the_case,
-                                                           const SphSection& section,
-                                                           ParticleStore& store,
-                                                           std::vector<std::string>& warnings) {
-  const double spacing = section.config.spacing;
+void generate_particles(const io::Case& the_case, const SphSection& section,
+                        io::MethodInstance& instance) {
+  ParticleStore& store = *instance.store;
   for (std::size_t r = 0; r < section.fluid.regions.size(); ++r)
-    append(store, fluid_points(the_case, spacing, section.fluid, r, store.size()),
+    append(store, fluid_points(the_case, section.config, section.fluid, r, store.size()),
            ParticleKind::fluid);
-  const int layers = wall_layers_for(section.config);
-  auto bodies = std::make_unique<geometry::MovingBodies>(store, the_case.domain);
+  instance.bodies = std::make_unique<geometry::MovingBodies>(store, the_case.domain);
   for (std::size_t w = 0; w < the_case.walls.size(); ++w) {
     const io::WallSpec& wall = the_case.walls[w];
     const std::size_t first = store.size();
-    const std::vector<Vec3> points = wall_points(the_case, w, spacing, layers, store.size());
-    if (auto warning = see_through_warning(the_case, section.config, w, points))
-      warnings.push_back(std::move(*warning));
+    const std::vector<Vec3> points = wall_points(the_case, section.config, w, store.size());
+    if (auto reason = see_through(the_case, section.config, w, points)) {
+      instance.warnings.push_back(fmt::format("{}: {}", the_case.file, *reason));
+      instance.load_caveats[static_cast<int>(w)] = std::move(*reason);
+    }
     append(store, points, ParticleKind::wall);
     auto motion = geometry::motion_registry().create(wall.motion.type, wall.motion);
     if (!motion) {
       throw io::case_error(the_case, fmt::format("walls[{}].motion.type", w),
                            "unknown motion '" + wall.motion.type + "'");
     }
-    bodies->add_body(first, std::move(motion));
+    instance.bodies->add_body(first, std::move(motion));
   }
   if (store.size() == 0)
     throw io::case_error(the_case, "fluid.regions", "the case generates no particles");
   check_inside_domain(the_case, store);
   tag_tracer(section.fluid, store);
-  return bodies;
 }
 
 }  // namespace partimix::sph

@@ -8,6 +8,7 @@
 
 #include "geometry/moving_bodies.hpp"
 #include "io/case.hpp"
+#include "io/method_type.hpp"
 #include "particles/particle_store.hpp"
 #include "sph/sph_section.hpp"
 
@@ -19,12 +20,11 @@ double kernel_support(const Config& config);
 // The number of wall layers: sph.wall_layers, or enough to cover the kernel support.
 int wall_layers_for(const Config& config);
 
-// Fills `store` (empty) with the fluid and then the wall particles of the case (ids in creation
-// order), tags the tracer fluid, and returns the bodies (one per wall). Adds to `warnings` what
-// the case should hear. Throws InputError naming the case key when the case cannot be built.
-std::unique_ptr<geometry::MovingBodies> generate_particles(const io::Case& the_case,
-                                                           const SphSection& section,
-                                                           ParticleStore& store,
-                                                           std::vector<std::string>& warnings);
+// Fills the instance's store (empty) with the fluid and then the wall particles of the case
+// (ids in creation order), tags the tracer fluid, and makes its bodies (one per wall). Adds to
+// its warnings what the case should hear, and to its load caveats the bodies thinner than the
+// kernel support. Throws InputError naming the case key when the case cannot be built.
+void generate_particles(const io::Case& the_case, const SphSection& section,
+                        io::MethodInstance& instance);
 
 }  // namespace partimix::sph

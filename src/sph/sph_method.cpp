@@ -20,7 +20,7 @@ io::MethodInstance SphMethod::build(const io::Case& the_case, const io::MethodSp
   const auto& section = dynamic_cast<const SphSection&>(*spec.section);
   io::MethodInstance instance;
   instance.store = std::make_unique<ParticleStore>();
-  instance.bodies = generate_particles(the_case, section, *instance.store, instance.warnings);
+  generate_particles(the_case, section, instance);
   try {
     instance.solver = std::make_unique<WcsphSolver>(
         *instance.store, the_case.domain, section.config,

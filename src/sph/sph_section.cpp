@@ -45,7 +45,22 @@ std::string read_gradient_kernel(Reader& section) {
   return name == "same" ? std::string() : name;
 }
 
-Config read_config(Reader& root) {
+// `lattice`: {type: cartesian} (the default), or {type: polar, centre} for rings about the
+// centre's z-parallel axis; not along a periodic x or y (the rings would not repeat).
+std::optional<Vec3> read_polar_centre(Reader& sph, const Domain& domain) {
+  Reader section = sph.optional_map("lattice");
+  if (section.choice("type", "cartesian", {"cartesian", "polar"}) == "cartesian") {
+    section.done();
+    return std::nullopt;
+  }
+  const Vec3 centre = section.vector("centre", domain.dimensions);
+  section.done();
+  if (domain.periodic[0] || domain.periodic[1])
+    throw sph.error("lattice", "a polar lattice cannot repeat along a periodic x or y axis");
+  return centre;
+}
+
+Config read_config(Reader& root, const Domain& domain) {
   Reader section = root.map("sph");
   Config config;
   config.spacing = section.required<double>("spacing", kPositive);
@@ -74,6 +89,7 @@ Config read_config(Reader& root) {
       section.optional<bool>("negative_wall_pressure", config.negative_wall_pressure);
   config.time_step = read_time_step(section);
   config.sort_interval = section.optional<int>("sort_interval", config.sort_interval, at_least(1));
+  config.polar_centre = read_polar_centre(section, domain);
   section.done();
   return config;
 }
@@ -120,7 +136,7 @@ void require_shapes(const io::Case& the_case) {
 std::shared_ptr<SphSection> read_sph_section(Reader& root, const io::Case& the_case) {
   require_shapes(the_case);
   auto section = std::make_shared<SphSection>();
-  section->config = read_config(root);
+  section->config = read_config(root, the_case.domain);
   const std::filesystem::path folder = std::filesystem::path(the_case.file).parent_path();
   section->fluid = read_fluid(root, the_case.domain.dimensions, folder);
   return section;

@@ -7,6 +7,7 @@
 
 #include <initializer_list>
 #include <map>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -145,6 +146,22 @@ TEST(ColumnHistory, FiguresAreColumnMeansAndThePrefixedWindow) {
   ASSERT_EQ(figures.size(), expected.size());
   for (const auto& [name, value] : expected)
     EXPECT_NEAR(figures.at(name), value, kTight) << name;
+}
+
+TEST(ColumnHistory, AFullWindowAfterTheRampHasNoCaveat) {
+  ColumnHistory history({"a"});
+  for (int k = 0; k <= 10; ++k) {
+    const double value = 1.0;
+    history.add(0.1 * k, std::span<const double>(&value, 1));
+  }
+  std::map<std::string, std::string> caveats;
+  history.add_caveats(caveats, 0.5, 1.0, 0.2);
+  EXPECT_TRUE(caveats.empty());
+  history.add_caveats(caveats, 0.5, 1.0, 0.6);
+  EXPECT_NE(caveats.at("a").find("takes in the start-up ramp"), std::string::npos);
+  caveats.clear();
+  history.add_caveats(caveats, 0.5, 3.0, 0.0);
+  EXPECT_NE(caveats.at("a").find("2 of the 3 revolutions asked"), std::string::npos);
 }
 
 }  // namespace

@@ -19,6 +19,9 @@
 namespace partimix::cli_test {
 namespace {
 
+using ::testing::HasSubstr;
+using ::testing::Not;
+
 // The box [0, 0.2]^2 full of fluid (rho 1000, mu 1 Pa s) at spacing 0.01, lattice points at
 // 0.005 + 0.01 i; walls[1] is the plate [0.058, 0.142] x [0.088, 0.112] (d = 0.084 m) turning
 // about its centre (0.1, 0.1) at 300 rpm (N = 5 r/s, period 0.2 s) after a 0.05 s ramp. The
@@ -185,6 +188,45 @@ std::vector<std::int32_t> int32_array(const std::string& frame, const std::strin
   std::memcpy(values.data(), frame.data() + at + sizeof bytes,
               values.size() * sizeof(std::int32_t));
   return values;
+}
+
+// The plate, 0.024 m wide, is thinner than 2h = 0.03 m: the figures of its loads say so.
+TEST_F(MixingRun, FiguresOfTheLoadsOnASeeThroughPlateCarryACaveat) {
+  const nlohmann::json run = read_json(out() / "run.json");
+  const nlohmann::json& caveats = run.at("caveats");
+  for (const char* figure : {"Np", "Re", "body1_torque_own"})
+    EXPECT_THAT(caveats.at(figure).get<std::string>(), HasSubstr("walls[1] is about")) << figure;
+  EXPECT_FALSE(caveats.contains("xi_final"));
+  EXPECT_THAT(run.at("warnings").at(0).get<std::string>(), HasSubstr("walls[1] is about"));
+}
+
+// The plots are titled with the case, and the plot of a column whose mean is a figure shows the
+// averaging window (and says when the figure is unreliable).
+TEST_F(MixingRun, PlotsCarryTheTitleAndTheAveragingWindow) {
+  const Outcome plot = run_partimix(scratch_, {"plot", "out"});
+  ASSERT_EQ(plot.exit_code, 0) << plot.err;
+  EXPECT_THAT(plot.out, HasSubstr("plot_series: title 'stirred_box'"));
+  EXPECT_THAT(plot.out, HasSubstr("Np.png: averaging window t = 0.1 to 0.2 s, mean "));
+  EXPECT_THAT(plot.out, HasSubstr("body1_torque_own.png: averaging window t = 0.1 to 0.2 s"));
+  EXPECT_THAT(plot.out, HasSubstr("(unreliable)"));
+  EXPECT_THAT(plot.out, Not(HasSubstr("xi.png: averaging")));
+}
+
+// A run shorter than the ramp plus the averaging window: the means take in the ramp, and the
+// summary marks them (issue 15: the demo's Np included the start-up ramp without a word).
+TEST(MixingRunCaveats, AnAverageThatTakesInTheRampIsMarked) {
+  const Scratch scratch;
+  scratch.write("case.yaml", replaced(kStirredBox, "width: 0.024", "width: 0.03"));
+  const Outcome outcome = run_partimix(
+      scratch, {"run", "case.yaml", "--out", "out", "-q", "-t", "1", "--set", "time.end=0.12"});
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  const nlohmann::json caveats = read_json(scratch.work() / "out" / "run.json").at("caveats");
+  const std::string np = caveats.at("Np");
+  EXPECT_THAT(np, HasSubstr("averaged over t = 0.02 to 0.12 s"));
+  EXPECT_THAT(np, HasSubstr("takes in the start-up ramp (ramp_time 0.05 s)"));
+  EXPECT_THAT(np, HasSubstr("run to at least t = 0.15 s"));
+  EXPECT_THAT(outcome.err, HasSubstr("(unreliable, see below)"));
+  EXPECT_THAT(outcome.err, HasSubstr("warning: Np, Np_total, Re"));
 }
 
 TEST_F(MixingRun, FramesTagHalfTheFluidAsTracer) {

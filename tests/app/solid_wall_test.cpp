@@ -152,8 +152,9 @@ TEST(SolidWall, PlateThinnerThanTheKernelSupportIsWarnedAbout) {
   for (const double width : {0.04, 0.02}) {
     const Simulation thin = build(folder, tank_with_plate(width));
     ASSERT_EQ(thin.warnings.size(), 1u) << width;
-    EXPECT_THAT(thin.warnings[0], HasSubstr("case.yaml: walls[1]: this solid wall is about"));
+    EXPECT_THAT(thin.warnings[0], HasSubstr("case.yaml: walls[1] is about"));
     EXPECT_THAT(thin.warnings[0], HasSubstr("less than the kernel support 2h = 0.06 m"));
+    EXPECT_THAT(thin.methods[0].load_caveats.at(1), HasSubstr("loads on it come out too small"));
   }
   EXPECT_THAT(build(folder, tank_with_plate(0.04)).warnings[0], HasSubstr("about 0.04 m thick"));
 }

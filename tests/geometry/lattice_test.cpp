@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/error.hpp"
 #include "geometry/lattice.hpp"
 
 namespace partimix::geometry {
@@ -90,6 +91,67 @@ TEST(Lattice, CylinderVesselWallsCoverSideAndBottom) {
   }
   EXPECT_TRUE(bottom);
   EXPECT_TRUE(side);
+}
+
+// A 2D annulus on the polar lattice about its centre (the Taylor-Couette set-up): the fluid
+// fills rings at R_in + (k + 1/2) dp, k = 0..9, each of round(2 pi r / dp) points, and the wall
+// rings lie at R_out + (k + 1/2) dp outside and R_in - (k + 1/2) dp inside.
+TEST(Lattice, PolarLatticeLaysAnAnnulusOnRings) {
+  const double dp = 0.01;
+  const double inner = 0.1;
+  const double outer = 0.2;
+  LatticeOptions polar;
+  polar.polar_centre = Vec3(0.5, 0.5, 0.0);
+  const Cylinder outer_circle(Vec3(0.5, 0.5, -1.0), outer, 2.0);
+  const Cylinder inner_circle(Vec3(0.5, 0.5, -1.0), inner, 2.0);
+  std::vector<Vec3> fluid = fill(outer_circle, dp, domain_2d(), polar);
+  std::erase_if(fluid, [&](const Vec3& x) { return inner_circle.signed_distance(x) < 0.0; });
+  std::size_t expected = 0;
+  for (int k = 0; k < 10; ++k)
+    expected += std::lround(2.0 * std::numbers::pi * (inner + (k + 0.5) * dp) / dp);
+  EXPECT_EQ(fluid.size(), expected);
+  for (const Vec3& x : fluid) {
+    const double r = (x - *polar.polar_centre).norm();
+    const double rings = (r - inner) / dp - 0.5;
+    EXPECT_NEAR(rings, std::round(rings), 1e-9) << "off the rings at r = " << r;
+  }
+  const auto outside = wall_layers(outer_circle, dp, 3, {}, domain_2d(), polar);
+  const auto inside = inside_layers(inner_circle, dp, 3, domain_2d(), polar);
+  for (const auto* walls : {&outside, &inside}) {
+    ASSERT_FALSE(walls->empty());
+    for (const Vec3& x : *walls) {
+      const double r = (x - *polar.polar_centre).norm();
+      EXPECT_NEAR(r / dp - 0.5, std::round(r / dp - 0.5), 1e-9);
+    }
+  }
+}
+
+TEST(Lattice, APolarLatticeStaysWithinTheShapesBox) {
+  LatticeOptions polar;
+  polar.polar_centre = Vec3(0.0, 0.0, 0.0);
+  const Box box(Vec3(0.5, 0.5, -1.0), Vec3(0.7, 0.6, 1.0));
+  const auto points = fill(box, 0.01, domain_2d(), polar);
+  ASSERT_FALSE(points.empty());
+  for (const Vec3& x : points)
+    EXPECT_LT(box.signed_distance(x), 0.0);
+}
+
+// Past a limit the sampler refuses before it allocates (issue 15: a 4294967296 m wide wall
+// allocated until memory ran out).
+TEST(Lattice, LimitsAreRefusedBeforeAllocating) {
+  Domain d = domain_2d();
+  d.hi = Vec3(5e9, 2.0, 0.0);
+  const Box huge(Vec3(0.0, 0.0, -1.0), Vec3(4294967296.0, 1.0, 1.0));
+  EXPECT_THROW(wall_layers(huge, 0.01, 3, {Face{1, 1}}, d), InputError);
+  LatticeOptions few;
+  few.points = 10;
+  const Box box(Vec3(0.0, 0.0, -1.0), Vec3(1.0, 0.5, 1.0));
+  try {
+    fill(box, 0.1, domain_2d(), few);
+    FAIL() << "50 points passed a limit of 10";
+  } catch (const InputError& error) {
+    EXPECT_NE(error.message().find("more than limits.particles = 10"), std::string::npos);
+  }
 }
 
 TEST(Shapes, SignedDistanceOfBoxAndCylinder) {

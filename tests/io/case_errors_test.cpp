@@ -162,10 +162,19 @@ TEST(CaseErrors, BadVectorComponentNamesItsIndex) {
   EXPECT_EQ(error.message(), "expected a number, got 'abc'");
 }
 
-TEST(CaseErrors, CylinderIn2D) {
-  const InputError error = load_error(replace_line(kMinimal2D, 15, "    - shape: cylinder"));
+TEST(CaseErrors, MeshIn2D) {
+  const InputError error = load_error(replace_line(kMinimal2D, 15, "    - shape: mesh"));
   expect_location(error, "case.yaml", 15, 14, "fluid.regions[0].shape");
-  EXPECT_THAT(error.message(), HasSubstr("cylinder needs dimensions: 3"));
+  EXPECT_THAT(error.message(), HasSubstr("mesh needs dimensions: 3"));
+}
+
+TEST(CaseErrors, CylinderHeightIn2D) {
+  const std::string text = kMinimal2D + R"(walls:
+  - {shape: cylinder, center: [0.5, 0.5], radius: 0.4, height: 1}
+)";
+  const InputError error = load_error(text);
+  EXPECT_EQ(error.location().key_path, "walls[0].height");
+  EXPECT_THAT(error.message(), HasSubstr("in 2D it is a circle"));
 }
 
 TEST(CaseErrors, DomainMaxNotAboveMin) {

@@ -29,6 +29,7 @@
 #include <numbers>
 
 #include "analysis/body_load.hpp"
+#include "couette_profile.hpp"
 #include "sph/wcsph_solver.hpp"
 
 namespace partimix {
@@ -134,25 +135,18 @@ Measured run(const Fluid& fluid_model, const std::string& viscous_operator, int 
   const auto& viscosity = store.find_scalar("viscosity")->values;
   const double reach = 2.0 * config.smoothing_length();
   Measured m;
-  int count = 0;
   int interior = 0;
   for (std::size_t i = 0; i < store.size(); ++i) {
-    if (!store.is_fluid(i))
-      continue;
-    const Vec3& x = store.position()[i];
-    const double r = x.norm();
-    const Vec3 tangent(-x.y() / r, x.x() / r, 0.0);
-    const double error =
-        store.velocity()[i].dot(tangent) - r * fluid_model.exact_angular_velocity(r);
-    m.l2 += error * error;
-    ++count;
-    if (r > kInner + reach && r < kOuter - reach) {
+    const double r = store.position()[i].norm();
+    if (store.is_fluid(i) && r > kInner + reach && r < kOuter - reach) {
       m.stress_error += viscosity[i] * rate[i] * r * r;
       ++interior;
     }
   }
   const double constant = fluid_model.exact_stress_constant();
-  m.l2 = std::sqrt(m.l2 / count) / (kOmega * kInner);
+  m.l2 =
+      tangential_rms_error(store, [&](double r) { return fluid_model.exact_angular_velocity(r); }) /
+      (kOmega * kInner);
   m.stress_error = m.stress_error / interior / constant - 1.0;
   solver.update_body_forces();
   const double torque = 2.0 * std::numbers::pi * constant;
