@@ -48,6 +48,7 @@ MethodOutputs::MethodOutputs(const io::Case& the_case, std::size_t m,
   analyses_.push_back(std::make_unique<analysis::KineticEnergy>(*method.store));
   analyses_.push_back(std::make_unique<analysis::MaxSpeed>());
   prefixes_.assign(2, "");
+  specs_.assign(2, nullptr);
   std::map<std::string, std::string> writer_of;  // column -> key of the analysis writing it
   const auto claim = [&](const std::string& key, const analysis::Analysis& a,
                          const std::string& prefix) {
@@ -71,25 +72,40 @@ MethodOutputs::MethodOutputs(const io::Case& the_case, std::size_t m,
     analyses_.push_back(analysis::analysis_registry().create(
         spec.type, options_of(spec, the_case, section, method.bodies.get())));
     prefixes_.push_back(spec.name.empty() ? "" : spec.name + ".");
+    specs_.push_back(&spec);
     claim(spec.key, *analyses_.back(), prefixes_.back());
     const auto caveat = method.load_caveats.find(spec.body);
     const bool of_loads = spec.type == "body_loads" || spec.type == "power_number";
     load_caveats_.push_back(of_loads && caveat != method.load_caveats.end() ? caveat->second : "");
   }
-  for (const auto& a : analyses_) {
-    column_count_ += a->columns().size();
-    needs_body_forces_ = needs_body_forces_ || a->needs_body_forces();
+  for (std::size_t k = 0; k < analyses_.size(); ++k) {
+    if (own_schedule(k))
+      own_.push_back(k);
+    else
+      column_count_ += analyses_[k]->columns().size();
+    needs_body_forces_ = needs_body_forces_ || analyses_[k]->needs_body_forces();
   }
+}
+
+bool MethodOutputs::own_schedule(std::size_t k) const {
+  return specs_[k] != nullptr && specs_[k]->sample_interval.has_value();
 }
 
 std::vector<analysis::Column> MethodOutputs::columns(bool prefixed) const {
   std::vector<analysis::Column> columns;
   for (std::size_t k = 0; k < analyses_.size(); ++k) {
-    for (analysis::Column column : analyses_[k]->columns()) {
-      column.name = (prefixed ? name_ + "." : "") + prefixes_[k] + column.name;
-      columns.push_back(std::move(column));
+    if (!own_schedule(k)) {
+      for (analysis::Column& column : columns_of(k, prefixed))
+        columns.push_back(std::move(column));
     }
   }
+  return columns;
+}
+
+std::vector<analysis::Column> MethodOutputs::columns_of(std::size_t k, bool prefixed) const {
+  std::vector<analysis::Column> columns = analyses_[k]->columns();
+  for (analysis::Column& column : columns)
+    column.name = (prefixed ? name_ + "." : "") + prefixes_[k] + column.name;
   return columns;
 }
 
@@ -97,20 +113,34 @@ void MethodOutputs::sample(double time, std::span<double> values) {
   if (needs_body_forces_)
     method_.solver->update_body_forces();
   std::size_t first = 0;
-  for (const auto& a : analyses_) {
-    const std::size_t count = a->columns().size();
-    a->sample(*method_.store, time, values.subspan(first, count));
+  for (std::size_t k = 0; k < analyses_.size(); ++k) {
+    if (own_schedule(k))
+      continue;
+    const std::size_t count = analyses_[k]->columns().size();
+    analyses_[k]->sample(*method_.store, time, values.subspan(first, count));
     first += count;
   }
 }
 
 void MethodOutputs::replay(double time, std::span<const double> values) {
   std::size_t first = 0;
-  for (const auto& a : analyses_) {
-    const std::size_t count = a->columns().size();
-    a->replay(time, values.subspan(first, count));
+  for (std::size_t k = 0; k < analyses_.size(); ++k) {
+    if (own_schedule(k))
+      continue;
+    const std::size_t count = analyses_[k]->columns().size();
+    analyses_[k]->replay(time, values.subspan(first, count));
     first += count;
   }
+}
+
+void MethodOutputs::sample_one(std::size_t k, double time, std::span<double> values) {
+  if (analyses_[k]->needs_body_forces())
+    method_.solver->update_body_forces();
+  analyses_[k]->sample(*method_.store, time, values);
+}
+
+void MethodOutputs::replay_one(std::size_t k, double time, std::span<const double> values) {
+  analyses_[k]->replay(time, values);
 }
 
 void MethodOutputs::add_figures(std::map<std::string, double>& figures, bool prefixed) const {

@@ -24,15 +24,24 @@ class MethodOutputs {
   MethodOutputs(const io::Case& the_case, std::size_t m, const io::MethodInstance& method);
 
   const std::string& name() const { return name_; }
-  // The series columns of the analyses, each named "<analysis name>.<column>" when the analysis
-  // has a name, and prefixed with "<method>." when `prefixed`.
+  // The series.csv columns of the analyses (all but those on a schedule of their own), each
+  // named "<analysis name>.<column>" when the analysis has a name, and prefixed with
+  // "<method>." when `prefixed`.
   std::vector<analysis::Column> columns(bool prefixed) const;
   std::size_t column_count() const { return column_count_; }
 
-  // Samples every analysis into `values` (column_count() of them).
+  // Samples the series.csv analyses into `values` (column_count() of them).
   void sample(double time, std::span<double> values);
-  // Gives the analyses the values they sampled before a checkpoint (Analysis::replay).
+  // Gives them the values they sampled before a checkpoint (Analysis::replay).
   void replay(double time, std::span<const double> values);
+
+  // The analyses on a schedule of their own (analyses[i].sample_interval), by index k, with
+  // their spec, columns, sampling and replay one at a time (app/analysis_series.hpp).
+  const std::vector<std::size_t>& own_schedules() const { return own_; }
+  const io::AnalysisSpec& spec_of(std::size_t k) const { return *specs_[k]; }
+  std::vector<analysis::Column> columns_of(std::size_t k, bool prefixed) const;
+  void sample_one(std::size_t k, double time, std::span<double> values);
+  void replay_one(std::size_t k, double time, std::span<const double> values);
   void add_figures(std::map<std::string, double>& figures, bool prefixed) const;
   // Why some of those figures are unreliable (Analysis::add_caveats, and the load caveats of the
   // method's bodies for the analyses of their loads), under the same names.
@@ -49,8 +58,11 @@ class MethodOutputs {
   std::string name_;
   const io::MethodInstance& method_;
   std::vector<std::unique_ptr<analysis::Analysis>> analyses_;
-  std::vector<std::string> prefixes_;      // parallel to analyses_: "<name>." or empty
-  std::vector<std::string> load_caveats_;  // parallel to analyses_: its body's, or empty
+  std::vector<std::string> prefixes_;           // parallel to analyses_: "<name>." or empty
+  std::vector<std::string> load_caveats_;       // parallel to analyses_: its body's, or empty
+  std::vector<const io::AnalysisSpec*> specs_;  // parallel to analyses_: null for built-ins
+  std::vector<std::size_t> own_;                // the analyses on their own schedule
+  bool own_schedule(std::size_t k) const;
   std::size_t column_count_ = 0;
   bool needs_body_forces_ = false;
   std::unique_ptr<io::PvdWriter> collection_;

@@ -82,6 +82,10 @@ Runner::Runner(const io::Case& the_case, Simulation& simulation, RunOptions opti
       clock_(the_case, simulation) {
   for (std::size_t m = 0; m < simulation.methods.size(); ++m)
     outputs_.emplace_back(the_case, m, simulation.methods[m]);
+  for (MethodOutputs& outputs : outputs_) {
+    for (const std::size_t k : outputs.own_schedules())
+      own_series_.emplace_back(outputs, k, !the_case.single_method());
+  }
 }
 
 std::vector<io::SeriesColumn> Runner::series_columns() const {
@@ -111,6 +115,10 @@ void Runner::start_fresh() {
         fmt::format("cannot prepare the output folder {}: {}", out.string(), error.message()));
   }
   series_ = std::make_unique<io::SeriesWriter>(out / "series.csv", series_columns());
+  for (AnalysisSeries& series : own_series_) {
+    record_output(out, series.file_name());
+    series.start_fresh(out);
+  }
   for (MethodOutputs& outputs : outputs_)
     outputs.open_frames(out, {});
   state_ = RunState{};
@@ -141,12 +149,16 @@ void Runner::start_from(const StateArchive& checkpoint) {
       offset += outputs.column_count();
     }
   }
+  for (AnalysisSeries& series : own_series_)
+    series.restore(checkpoint);
   std::vector<std::vector<io::PvdEntry>> frames;
   for (const MethodOutputs& outputs : outputs_)
     frames.push_back(restore_frames(outputs.name(), checkpoint));
   // All read: now the files go back to where the checkpoint left them.
   std::filesystem::create_directories(out / "frames");
   series_ = std::make_unique<io::SeriesWriter>(out / "series.csv", columns, rows_);
+  for (AnalysisSeries& series : own_series_)
+    series.reopen(out);
   for (std::size_t m = 0; m < outputs_.size(); ++m) {
     remove_frames_from(out / "frames", outputs_[m].name(), frames[m].size());
     outputs_[m].open_frames(out, std::move(frames[m]));
@@ -183,6 +195,8 @@ void Runner::write_checkpoint() {
   const std::vector<io::SeriesColumn> columns = series_columns();
   archive.put_text("series/columns", joined(columns));
   archive.put_doubles("series/rows", rows_, columns.size());
+  for (const AnalysisSeries& series : own_series_)
+    series.save(archive);
   for (std::size_t m = 0; m < simulation_.methods.size(); ++m) {
     simulation_.methods[m].solver->save(archive, method_prefix(case_.methods[m].name));
     save_frames(outputs_[m], archive);
@@ -270,6 +284,8 @@ io::RunSummary Runner::run(const StateArchive* checkpoint) {
   try {
     if (checkpoint == nullptr) {
       sample(0.0, 0, 0.0);
+      for (AnalysisSeries& series : own_series_)
+        series.sample_if_due(0.0, 0, 0.0, 1e-9 * case_.time.end);
       if (case_.output.frames)
         write_frames(0.0);
     }
@@ -307,6 +323,8 @@ void Runner::loop(io::RunSummary& summary, std::optional<Progress>& progress) {
       sample(t, state_.steps, state_.last_dt);
       state_.next_sample = next_multiple(time.sample_interval, t, tolerance);
     }
+    for (AnalysisSeries& series : own_series_)
+      series.sample_if_due(t, state_.steps, state_.last_dt, tolerance);
     if (case_.output.frames && t >= state_.next_frame - tolerance) {
       write_frames(t);
       state_.next_frame = next_multiple(time.output_interval, t, tolerance);
@@ -345,6 +363,8 @@ void Runner::finish(io::RunSummary& summary) {
   if (summary.status != "failed") {
     if (state_.last_sample_time != state_.time)
       sample(state_.time, state_.steps, state_.last_dt);
+    for (AnalysisSeries& series : own_series_)
+      series.finish(state_.time, state_.steps, state_.last_dt);
     if (case_.output.frames && state_.last_frame_time != state_.time)
       write_frames(state_.time);
   }

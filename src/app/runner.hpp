@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "app/analysis_series.hpp"
 #include "app/method_outputs.hpp"
 #include "app/run_clock.hpp"
 #include "app/run_state.hpp"
@@ -67,7 +68,8 @@ class Runner {
   Simulation& simulation_;
   RunOptions options_;
   RunClock clock_;
-  std::vector<MethodOutputs> outputs_;  // one per method
+  std::vector<MethodOutputs> outputs_;      // one per method
+  std::vector<AnalysisSeries> own_series_;  // the analyses on a schedule of their own
   std::unique_ptr<io::SeriesWriter> series_;
   std::vector<double> rows_;  // every row sampled, full precision, for checkpoints
   std::vector<double> row_;

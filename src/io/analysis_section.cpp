@@ -196,6 +196,36 @@ std::string read_name(Reader& item) {
   return name;
 }
 
+// sample_interval, sample_from, sample_until: an analysis sampled on its own schedule into
+// series_<name>.csv (a short impact sampled finely inside a long run).
+void read_schedule(Reader& item, AnalysisSpec& analysis, const Case& the_case) {
+  analysis.sample_interval = item.automatic<double>("sample_interval", kPositive);
+  if (!analysis.sample_interval) {
+    for (const std::string key : {"sample_from", "sample_until"}) {
+      if (item.contains(key))
+        throw item.error(key, "applies with the analysis' own sample_interval only");
+    }
+    return;
+  }
+  if (analysis.name.empty()) {
+    throw item.error("sample_interval",
+                     "an analysis with its own sample_interval needs a "
+                     "`name`: its rows go to series_<name>.csv");
+  }
+  analysis.sample_from = item.optional<double>("sample_from", 0.0, kNonNegative);
+  analysis.sample_until = item.optional<double>("sample_until", the_case.time.end, kPositive);
+  if (!(analysis.sample_until > analysis.sample_from))
+    throw item.error("sample_until", "must be later than sample_from");
+  const double span = std::min(analysis.sample_until, the_case.time.end) - analysis.sample_from;
+  const double rows = span / *analysis.sample_interval;
+  if (rows > the_case.limits.series_rows) {
+    throw item.error("sample_interval",
+                     fmt::format("{:.3g} rows, more than limits.series_rows = {:.3g}; lengthen "
+                                 "the interval, shorten the span or raise the limit",
+                                 rows, the_case.limits.series_rows));
+  }
+}
+
 }  // namespace
 
 std::vector<AnalysisSpec> read_analyses(Reader& root, const Case& the_case) {
@@ -206,6 +236,14 @@ std::vector<AnalysisSpec> read_analyses(Reader& root, const Case& the_case) {
     analysis.key = fmt::format("analyses[{}]", analyses.size());
     analysis.type = item.required_choice("type", kTypes);
     analysis.name = read_name(item);
+    for (const AnalysisSpec& earlier : analyses) {
+      if (!analysis.name.empty() && earlier.name == analysis.name) {
+        throw item.error("name", fmt::format("{} has this name already: names are the prefixes "
+                                             "of columns and of series files",
+                                             earlier.key));
+      }
+    }
+    read_schedule(item, analysis, the_case);
     const MethodSection& section = read_method(item, analysis, the_case);
     if (analysis.type == "front_position")
       analysis.axis = axis_index(item.choice("axis", "x", axis_names(dimensions)));

@@ -4,6 +4,7 @@
 // no concrete method: each method named by `solver` reads its own sections into a
 // MethodSection of its own type (io/method_type.hpp), and the walls, the domain, time and
 // analyses are shared by all of them.
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -77,6 +78,11 @@ struct AnalysisSpec {
   std::string key;   // where it is in the case: "analyses[i]"
   std::string name;  // optional: its columns and figures are "<name>.<column>"
   std::string method;
+  // Its own schedule (requires a name): rows every sample_interval from sample_from to
+  // sample_until into series_<name>.csv, in place of series.csv's rows.
+  std::optional<double> sample_interval;                          // [s]
+  double sample_from = 0.0;                                       // [s]
+  double sample_until = std::numeric_limits<double>::infinity();  // [s]
   int axis = 0;
   int body = 0;
   Vec3 vessel_axis_point = Vec3::Zero();

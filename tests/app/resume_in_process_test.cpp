@@ -1,8 +1,8 @@
 // Resuming in this process (docs/architecture-notes.md, "Checkpoints"), small enough for the
 // sanitizers (tests/system has the kill-and-resume runs of the program): water and grains in one
 // tank run past half time with checkpoints, then on to the end from the last checkpoint in a fresh
-// simulation, and end bit for bit as the run that went through: series.csv, every frame of both
-// methods, the collections and the figures.
+// simulation, and end bit for bit as the run that went through: series.csv, the series of an
+// analysis on its own schedule, every frame of both methods, the collections and the figures.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -57,6 +57,8 @@ dem:
 analyses:
   - {type: mixing, method: sph, region: box, min: [0, 0, 0], max: [0.1, 0.1, 0.05], cells: [2, 2, 1]}
   - {type: mixing, method: dem, region: box, min: [0, 0, 0], max: [0.1, 0.1, 0.12], cells: [2, 2, 1]}
+  - {type: mixing, method: dem, name: fine, sample_interval: 0.0001, sample_from: 0.002,
+     sample_until: 0.005, region: box, min: [0, 0, 0], max: [0.1, 0.1, 0.12], cells: [2, 2, 1]}
 )";
 }
 
@@ -83,6 +85,8 @@ TEST(ResumeInProcess, TheSecondHalfFromACheckpointIsTheRunThatWentThrough) {
   ASSERT_EQ(resumed.summary.status, "completed");
 
   EXPECT_EQ(read_file(dir / "whole" / "series.csv"), read_file(dir / "parts" / "series.csv"));
+  EXPECT_EQ(read_file(dir / "whole" / "series_fine.csv"),
+            read_file(dir / "parts" / "series_fine.csv"));
   ASSERT_EQ(through.figures.size(), resumed.figures.size());
   for (const auto& [name, value] : through.figures) {
     const double again = resumed.figures.at(name);

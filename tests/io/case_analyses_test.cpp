@@ -334,5 +334,31 @@ TEST(CaseAnalyses, TracerNormalMustNotBeZero) {
   EXPECT_THAT(error.message(), HasSubstr("must not be the zero vector"));
 }
 
+TEST(CaseAnalyses, AnOwnScheduleNeedsANameAndStaysWithinTheLimit) {
+  const InputError unnamed =
+      load_error(with_analyses_3d("  - {type: front_position, axis: x, sample_interval: 0.01}\n"));
+  EXPECT_EQ(unnamed.location().key_path, "analyses[0].sample_interval");
+  EXPECT_THAT(unnamed.message(), HasSubstr("needs a `name`"));
+  const InputError stray =
+      load_error(with_analyses_3d("  - {type: front_position, axis: x, sample_from: 0.5}\n"));
+  EXPECT_EQ(stray.location().key_path, "analyses[0].sample_from");
+  const InputError too_many = load_error(
+      with_analyses_3d("  - {type: front_position, axis: x, name: f, sample_interval: 1.0e-9}\n"));
+  EXPECT_THAT(too_many.message(), HasSubstr("more than limits.series_rows"));
+  const io::Case loaded = load_text(with_analyses_3d(
+      "  - {type: front_position, axis: x, name: f, sample_interval: 0.01, sample_from: 0.2}\n"));
+  EXPECT_EQ(loaded.analyses[0].sample_interval, 0.01);
+  EXPECT_EQ(loaded.analyses[0].sample_from, 0.2);
+  EXPECT_EQ(loaded.analyses[0].sample_until, loaded.time.end);
+}
+
+TEST(CaseAnalyses, TwoAnalysesOfOneNameAreRefused) {
+  const InputError error =
+      load_error(with_analyses_3d("  - {type: front_position, axis: x, name: f}\n  - {type: "
+                                  "front_position, axis: y, name: f}\n"));
+  EXPECT_EQ(error.location().key_path, "analyses[1].name");
+  EXPECT_THAT(error.message(), HasSubstr("analyses[0] has this name already"));
+}
+
 }  // namespace
 }  // namespace partimix::case_test
