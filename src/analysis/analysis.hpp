@@ -24,6 +24,27 @@ struct Column {
   std::string unit;
 };
 
+// The summary figures of a run (run.json "figures" and "figure_units"): name -> value, each
+// with its unit ("" for a number without one, written [-] like series.csv).
+class Figures {
+ public:
+  void add(const std::string& name, double value, const std::string& unit) {
+    values_[name] = value;
+    units_[name] = unit;
+  }
+  double at(const std::string& name) const { return values_.at(name); }
+  const std::string& unit(const std::string& name) const { return units_.at(name); }
+  bool contains(const std::string& name) const { return values_.contains(name); }
+  bool empty() const { return values_.empty(); }
+  std::size_t size() const { return values_.size(); }
+  const std::map<std::string, double>& values() const { return values_; }
+  const std::map<std::string, std::string>& units() const { return units_; }
+
+ private:
+  std::map<std::string, double> values_;
+  std::map<std::string, std::string> units_;
+};
+
 class Analysis {
  public:
   virtual ~Analysis() = default;
@@ -37,8 +58,8 @@ class Analysis {
   virtual void replay(double time, std::span<const double> values) = 0;
   // True when sample() reads the field "body_force" (Solver::update_body_forces).
   virtual bool needs_body_forces() const { return false; }
-  // Adds the analysis' summary figures (name -> value) for run.json's "figures".
-  virtual void add_figures(std::map<std::string, double>& /*figures*/) const {}
+  // Adds the analysis' summary figures for run.json's "figures".
+  virtual void add_figures(Figures& /*figures*/) const {}
   // Adds, for each of its figures that is not what it claims to be, why (figure name -> reason):
   // a time average whose window is shorter than asked or takes in the start-up ramp.
   virtual void add_caveats(Caveats& /*caveats*/) const {}

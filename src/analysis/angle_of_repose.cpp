@@ -105,9 +105,9 @@ void AngleOfRepose::replay(double /*time*/, std::span<const double> values) {
   last_ = values[0];
 }
 
-void AngleOfRepose::add_figures(std::map<std::string, double>& figures) const {
+void AngleOfRepose::add_figures(Figures& figures) const {
   if (std::isfinite(last_))
-    figures["angle_of_repose_final"] = last_;
+    figures.add("angle_of_repose_final", last_, "deg");
 }
 
 }  // namespace partimix::analysis

@@ -24,7 +24,7 @@ class AngleOfRepose final : public Analysis {
   void sample(const ParticleStore& particles, double time, std::span<double> values) override;
   void replay(double time, std::span<const double> values) override;
   // angle_of_repose_final: the last value [deg], when it is not NaN.
-  void add_figures(std::map<std::string, double>& figures) const override;
+  void add_figures(Figures& figures) const override;
 
   const Vec3& horizontal() const { return horizontal_; }
   const Vec3& up() const { return up_; }

@@ -13,27 +13,24 @@ const char* const kNames[] = {"force_x",       "force_y", "force_z",       "torq
                               "torque_vessel", "power",   "power_rotation"};
 const char* const kUnits[] = {"N", "N", "N", "N m", "N m", "W", "W"};
 
-std::vector<std::string> column_names(const std::string& prefix) {
-  std::vector<std::string> names;
-  for (const char* name : kNames)
-    names.push_back(prefix + name);
-  return names;
+std::vector<Column> columns_of(const std::string& prefix) {
+  std::vector<Column> columns;
+  for (std::size_t k = 0; k < std::size(kNames); ++k)
+    columns.push_back({prefix + kNames[k], kUnits[k]});
+  return columns;
 }
 
 }  // namespace
 
 BodyLoads::BodyLoads(const BodyOptions& body)
-    : body_(body), history_(column_names(fmt::format("body{}_", body.index))) {}
+    : body_(body), history_(columns_of(fmt::format("body{}_", body.index))) {}
 
 std::string BodyLoads::prefix() const {
   return fmt::format("body{}_", body_.index);
 }
 
 std::vector<Column> BodyLoads::columns() const {
-  std::vector<Column> result;
-  for (std::size_t k = 0; k < std::size(kNames); ++k)
-    result.push_back({prefix() + kNames[k], kUnits[k]});
-  return result;
+  return columns_of(prefix());
 }
 
 void BodyLoads::sample(const ParticleStore& particles, double time, std::span<double> values) {
@@ -56,7 +53,7 @@ void BodyLoads::replay(double time, std::span<const double> values) {
   history_.add(time, values);
 }
 
-void BodyLoads::add_figures(std::map<std::string, double>& figures) const {
+void BodyLoads::add_figures(Figures& figures) const {
   history_.add_figures(figures, prefix(), revolution_period(body_.motion_config),
                        body_.average_revolutions);
 }

@@ -16,7 +16,7 @@ class BodyLoads final : public Analysis {
   void sample(const ParticleStore& particles, double time, std::span<double> values) override;
   void replay(double time, std::span<const double> values) override;
   bool needs_body_forces() const override { return true; }
-  void add_figures(std::map<std::string, double>& figures) const override;
+  void add_figures(Figures& figures) const override;
   void add_caveats(Caveats& caveats) const override;
 
  private:

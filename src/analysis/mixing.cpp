@@ -43,9 +43,9 @@ void Mixing::replay(double time, std::span<const double> values) {
   laceys_.push_back(last_lacey_);
 }
 
-void Mixing::add_figures(std::map<std::string, double>& figures) const {
-  figures["xi_final"] = last_xi_;
-  figures["lacey_final"] = last_lacey_;
+void Mixing::add_figures(Figures& figures) const {
+  figures.add("xi_final", last_xi_, "");
+  figures.add("lacey_final", last_lacey_, "");
   for (const MixingModel model :
        {MixingModel::exponential, MixingModel::error_function, MixingModel::diffusive}) {
     const MixingRateFit fit = fit_mixing_rate(times_, laceys_, model, kRandomMixtureLacey);
@@ -53,13 +53,13 @@ void Mixing::add_figures(std::map<std::string, double>& figures) const {
       continue;  // too few samples, or nothing to fit: no figures rather than NaN ones
     const std::string suffix = mixing_model_suffix(model);
     auto name = [&suffix](const char* stem) { return std::string(stem).append(suffix); };
-    figures[name("lacey_rate_")] = fit.rate;
-    figures[name("lacey_initial_")] = fit.initial;
-    figures[name("lacey_plateau_")] = fit.plateau;
-    figures[name("lacey_fit_r2_")] = fit.r_squared;
-    figures[name("lacey_fit_rms_")] = fit.rms;
-    figures[name("lacey_fit_at_limit_")] = fit.at_search_limit ? 1.0 : 0.0;
-    figures[name("lacey_plateau_bounded_")] = fit.plateau_bounded ? 1.0 : 0.0;
+    figures.add(name("lacey_rate_"), fit.rate, "1/s");
+    figures.add(name("lacey_initial_"), fit.initial, "");
+    figures.add(name("lacey_plateau_"), fit.plateau, "");
+    figures.add(name("lacey_fit_r2_"), fit.r_squared, "");
+    figures.add(name("lacey_fit_rms_"), fit.rms, "");
+    figures.add(name("lacey_fit_at_limit_"), fit.at_search_limit ? 1.0 : 0.0, "");
+    figures.add(name("lacey_plateau_bounded_"), fit.plateau_bounded ? 1.0 : 0.0, "");
   }
 }
 

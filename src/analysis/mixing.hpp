@@ -19,7 +19,7 @@ class Mixing final : public Analysis {
   std::vector<Column> columns() const override { return {{"xi", ""}, {"lacey", ""}}; }
   void sample(const ParticleStore& particles, double time, std::span<double> values) override;
   void replay(double time, std::span<const double> values) override;
-  void add_figures(std::map<std::string, double>& figures) const override;
+  void add_figures(Figures& figures) const override;
 
  private:
   std::unique_ptr<SamplingCells> cells_;

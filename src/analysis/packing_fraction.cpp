@@ -46,9 +46,9 @@ void PackingFraction::replay(double /*time*/, std::span<const double> values) {
   last_ = values[0];
 }
 
-void PackingFraction::add_figures(std::map<std::string, double>& figures) const {
+void PackingFraction::add_figures(Figures& figures) const {
   if (std::isfinite(last_))
-    figures["packing_fraction_final"] = last_;
+    figures.add("packing_fraction_final", last_, "");
 }
 
 }  // namespace partimix::analysis

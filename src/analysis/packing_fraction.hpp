@@ -18,7 +18,7 @@ class PackingFraction final : public Analysis {
   void sample(const ParticleStore& particles, double time, std::span<double> values) override;
   void replay(double time, std::span<const double> values) override;
   // packing_fraction_final: the last value (none before the first sample).
-  void add_figures(std::map<std::string, double>& figures) const override;
+  void add_figures(Figures& figures) const override;
 
  private:
   PackingBox box_;

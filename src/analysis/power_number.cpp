@@ -48,7 +48,7 @@ PowerNumber::PowerNumber(const AnalysisOptions& options)
       density_(options.fluid.density),
       scales_(power_scales(options.body.motion_config, options.diameter)),
       reynolds_(reynolds_number(options.fluid, options.metzner_otto, scales_)),
-      history_({"Re", "Np", "Np_total"}) {}
+      history_(columns()) {}
 
 std::vector<Column> PowerNumber::columns() const {
   return {{"Re", ""}, {"Np", ""}, {"Np_total", ""}};
@@ -70,7 +70,7 @@ void PowerNumber::replay(double time, std::span<const double> values) {
   history_.add(time, values);
 }
 
-void PowerNumber::add_figures(std::map<std::string, double>& figures) const {
+void PowerNumber::add_figures(Figures& figures) const {
   history_.add_figures(figures, "", revolution_period(body_.motion_config),
                        body_.average_revolutions);
 }

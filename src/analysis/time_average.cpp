@@ -37,17 +37,17 @@ void ColumnHistory::add(double time, std::span<const double> values) {
     signals_[k].add(time, values[k]);
 }
 
-void ColumnHistory::add_figures(std::map<std::string, double>& figures, const std::string& prefix,
-                                double period, double revolutions) const {
+void ColumnHistory::add_figures(Figures& figures, const std::string& prefix, double period,
+                                double revolutions) const {
   if (signals_.empty() || signals_.front().empty())
     return;
   const AveragingWindow window = averaging_window(
       signals_.front().first_time(), signals_.front().last_time(), period, revolutions);
   for (std::size_t k = 0; k < signals_.size(); ++k)
-    figures[names_[k]] = signals_[k].mean(window.from, window.to);
-  figures[prefix + "average_from"] = window.from;
-  figures[prefix + "average_to"] = window.to;
-  figures[prefix + "average_revolutions"] = window.revolutions;
+    figures.add(columns_[k].name, signals_[k].mean(window.from, window.to), columns_[k].unit);
+  figures.add(prefix + "average_from", window.from, "s");
+  figures.add(prefix + "average_to", window.to, "s");
+  figures.add(prefix + "average_revolutions", window.revolutions, "");
 }
 
 void ColumnHistory::add_caveats(std::map<std::string, std::string>& caveats, double period,
@@ -68,8 +68,8 @@ void ColumnHistory::add_caveats(std::map<std::string, std::string>& caveats, dou
     reason += fmt::format(", which takes in the start-up ramp (ramp_time {:.4g} s)", ramp_time);
   reason += fmt::format("; run to at least t = {:.4g} s for a full window after the ramp",
                         ramp_time + revolutions * period);
-  for (const std::string& name : names_)
-    caveats[name] = reason;
+  for (const Column& column : columns_)
+    caveats[column.name] = reason;
 }
 
 }  // namespace partimix::analysis

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/analysis.hpp"
 #include "analysis/averaging_window.hpp"
 
 namespace partimix::analysis {
@@ -28,15 +29,15 @@ class SampledSignal {
 };
 
 // The sampled history of an analysis' columns, for the summary: the mean of each column over
-// the averaging window, under the column's name, and the window as <prefix>average_from,
-// <prefix>average_to [s] and <prefix>average_revolutions.
+// the averaging window, under the column's name and with its unit, and the window as
+// <prefix>average_from, <prefix>average_to [s] and <prefix>average_revolutions.
 class ColumnHistory {
  public:
-  explicit ColumnHistory(std::vector<std::string> names) : names_(std::move(names)) {
-    signals_.resize(names_.size());
+  explicit ColumnHistory(std::vector<Column> columns) : columns_(std::move(columns)) {
+    signals_.resize(columns_.size());
   }
   void add(double time, std::span<const double> values);
-  void add_figures(std::map<std::string, double>& figures, const std::string& prefix, double period,
+  void add_figures(Figures& figures, const std::string& prefix, double period,
                    double revolutions) const;
   // A caveat on each mean whose window holds fewer than `revolutions` periods (the run was
   // shorter) or starts before `ramp_time` (it takes in the start-up ramp).
@@ -44,7 +45,7 @@ class ColumnHistory {
                    double ramp_time) const;
 
  private:
-  std::vector<std::string> names_;
+  std::vector<Column> columns_;
   std::vector<SampledSignal> signals_;
 };
 

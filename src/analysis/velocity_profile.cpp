@@ -68,10 +68,10 @@ void VelocityProfile::replay(double /*time*/, std::span<const double> values) {
   std::copy(values.begin(), values.end(), last_.begin());
 }
 
-void VelocityProfile::add_figures(std::map<std::string, double>& figures) const {
+void VelocityProfile::add_figures(Figures& figures) const {
   for (std::size_t b = 0; b < last_.size(); ++b) {
     if (std::isfinite(last_[b]))
-      figures["velocity_profile_" + std::to_string(b) + "_final"] = last_[b];
+      figures.add("velocity_profile_" + std::to_string(b) + "_final", last_[b], "m/s");
   }
 }
 

@@ -24,7 +24,7 @@ class VelocityProfile final : public Analysis {
   void sample(const ParticleStore& particles, double time, std::span<double> values) override;
   void replay(double time, std::span<const double> values) override;
   // velocity_profile_<b>_final: the last sample's value of each bin that was not empty.
-  void add_figures(std::map<std::string, double>& figures) const override;
+  void add_figures(Figures& figures) const override;
 
  private:
   ProfileLine line_;

@@ -40,13 +40,16 @@ void print_warnings(const Simulation& simulation) {
     fmt::print(stderr, "warning: {}\n", warning);
 }
 
-// The figures; one with a caveat is marked and the reasons follow, once each.
-void print_figures(const std::map<std::string, double>& figures, const analysis::Caveats& caveats) {
+// The figures with their units; one with a caveat is marked and the reasons follow, once each.
+void print_figures(const Runner& runner) {
+  const analysis::Caveats& caveats = runner.caveats();
   std::map<std::string, std::vector<std::string>> reasons;
-  for (const auto& [name, value] : figures) {
+  for (const auto& [name, value] : runner.figures()) {
     const auto caveat = caveats.find(name);
     const bool marked = caveat != caveats.end();
-    fmt::print(stderr, "  {:<24} {:.6g}{}\n", name, value,
+    const std::string& unit = runner.figure_units().at(name);
+    fmt::print(stderr, "  {:<32} {:.6g}{}\n",
+               fmt::format("{} [{}]", name, unit.empty() ? "-" : unit), value,
                marked ? "  (unreliable, see below)" : "");
     if (marked)
       reasons[caveat->second].push_back(name);
@@ -144,7 +147,7 @@ int run_command(const RunArguments& arguments) {
                        fmt::format("the checkpoint does not fit the case: {}", error.what()));
     }
     print_summary(summary);
-    print_figures(runner.figures(), runner.caveats());
+    print_figures(runner);
     return exit_code_of(summary.status);
   } catch (const InputError& error) {
     monitor.finish();

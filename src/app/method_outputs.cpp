@@ -143,12 +143,12 @@ void MethodOutputs::replay_one(std::size_t k, double time, std::span<const doubl
   analyses_[k]->replay(time, values);
 }
 
-void MethodOutputs::add_figures(std::map<std::string, double>& figures, bool prefixed) const {
+void MethodOutputs::add_figures(analysis::Figures& figures, bool prefixed) const {
   for (std::size_t k = 0; k < analyses_.size(); ++k) {
-    std::map<std::string, double> own;
+    analysis::Figures own;
     analyses_[k]->add_figures(own);
-    for (const auto& [figure, value] : own)
-      figures[(prefixed ? name_ + "." : "") + prefixes_[k] + figure] = value;
+    for (const auto& [figure, value] : own.values())
+      figures.add((prefixed ? name_ + "." : "") + prefixes_[k] + figure, value, own.unit(figure));
   }
 }
 
@@ -158,9 +158,9 @@ void MethodOutputs::add_caveats(analysis::Caveats& caveats, bool prefixed) const
     analysis::Caveats own;
     analyses_[k]->add_caveats(own);
     if (!load_caveats_[k].empty()) {
-      std::map<std::string, double> figures;
+      analysis::Figures figures;
       analyses_[k]->add_figures(figures);
-      for (const auto& entry : figures) {
+      for (const auto& entry : figures.values()) {
         std::string& reason = own[entry.first];
         reason = reason.empty() ? load_caveats_[k] : load_caveats_[k] + "; " + reason;
       }

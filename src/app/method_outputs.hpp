@@ -42,7 +42,7 @@ class MethodOutputs {
   std::vector<analysis::Column> columns_of(std::size_t k, bool prefixed) const;
   void sample_one(std::size_t k, double time, std::span<double> values);
   void replay_one(std::size_t k, double time, std::span<const double> values);
-  void add_figures(std::map<std::string, double>& figures, bool prefixed) const;
+  void add_figures(analysis::Figures& figures, bool prefixed) const;
   // Why some of those figures are unreliable (Analysis::add_caveats, and the load caveats of the
   // method's bodies for the analyses of their loads), under the same names.
   void add_caveats(analysis::Caveats& caveats, bool prefixed) const;

@@ -7,7 +7,7 @@
 namespace partimix::app {
 namespace {
 
-const RunRecord kFailed{"failed", {}, {}};
+const RunRecord kFailed{"failed", {}, {}, {}};
 
 std::string status_of(const nlohmann::json& run_json) {
   const nlohmann::json* status = nullptr;
@@ -31,15 +31,17 @@ std::map<std::string, double> figures_of(const nlohmann::json& run_json) {
   return figures;
 }
 
-std::map<std::string, std::string> caveats_of(const nlohmann::json& run_json) {
-  std::map<std::string, std::string> caveats;
-  if (!run_json.contains("caveats") || !run_json["caveats"].is_object())
-    return caveats;
-  for (const auto& [name, reason] : run_json["caveats"].items()) {
-    if (reason.is_string())
-      caveats[name] = reason.get<std::string>();
+// The strings of the object `key` of run.json, by name (caveats, figure units).
+std::map<std::string, std::string> texts_of(const nlohmann::json& run_json,
+                                            const std::string& key) {
+  std::map<std::string, std::string> texts;
+  if (!run_json.contains(key) || !run_json[key].is_object())
+    return texts;
+  for (const auto& [name, text] : run_json[key].items()) {
+    if (text.is_string())
+      texts[name] = text.get<std::string>();
   }
-  return caveats;
+  return texts;
 }
 
 }  // namespace
@@ -51,7 +53,8 @@ RunRecord read_run_record(const std::filesystem::path& run_dir) {
   const nlohmann::json run_json = nlohmann::json::parse(in, nullptr, false);
   if (run_json.is_discarded() || !run_json.is_object())
     return kFailed;
-  return {status_of(run_json), figures_of(run_json), caveats_of(run_json)};
+  return {status_of(run_json), figures_of(run_json), texts_of(run_json, "caveats"),
+          texts_of(run_json, "figure_units")};
 }
 
 }  // namespace partimix::app

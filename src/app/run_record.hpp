@@ -11,6 +11,7 @@ struct RunRecord {
   std::string status;                          // run.json "run"."status", or "failed"
   std::map<std::string, double> figures;       // run.json "figures": name -> number
   std::map<std::string, std::string> caveats;  // run.json "caveats": figure -> why unreliable
+  std::map<std::string, std::string> units;    // run.json "figure_units": figure -> unit
 };
 
 // The record of the run that wrote `run_dir`. The status is "failed" when run.json is missing

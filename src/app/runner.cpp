@@ -224,8 +224,11 @@ void Runner::write_metadata(const io::RunSummary& summary) const {
                        {"particles", method.store->size()}});
   }
   nlohmann::json figures = nlohmann::json::object();
-  for (const auto& [name, value] : figures_)
+  nlohmann::json units = nlohmann::json::object();
+  for (const auto& [name, value] : figures_.values()) {
     figures[name] = value;
+    units[name] = figures_.unit(name).empty() ? "-" : figures_.unit(name);
+  }
   nlohmann::json caveats = nlohmann::json::object();
   for (const auto& [name, reason] : caveats_)
     caveats[name] = reason;
@@ -237,6 +240,7 @@ void Runner::write_metadata(const io::RunSummary& summary) const {
                          {"warnings", simulation_.warnings},
                          {"run", io::to_json(summary)},
                          {"figures", figures},
+                         {"figure_units", units},
                          {"caveats", caveats}};
   if (!last_checkpoint_.empty())
     content["checkpoint"] = last_checkpoint_.lexically_relative(options_.output_dir).string();

@@ -46,7 +46,8 @@ class Runner {
 
   // The analyses' summary figures (time averages, final values) of the last run, also in
   // run.json under "figures".
-  const std::map<std::string, double>& figures() const { return figures_; }
+  const std::map<std::string, double>& figures() const { return figures_.values(); }
+  const std::map<std::string, std::string>& figure_units() const { return figures_.units(); }
   // Why some figures are unreliable (MethodOutputs::add_caveats), also in run.json "caveats".
   const analysis::Caveats& caveats() const { return caveats_; }
 
@@ -74,7 +75,7 @@ class Runner {
   std::vector<double> rows_;  // every row sampled, full precision, for checkpoints
   std::vector<double> row_;
   RunState state_;
-  std::map<std::string, double> figures_;
+  analysis::Figures figures_;
   analysis::Caveats caveats_;
   std::filesystem::path last_checkpoint_;
   Stopwatch wall_;  // since this process started the run

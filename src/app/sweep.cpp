@@ -150,7 +150,7 @@ SweepTable gather(const Sweep& sweep, const std::vector<std::optional<int>>& cod
     table.keys.push_back(axis.key);
   for (std::size_t i = 0; i < sweep.points.size(); ++i) {
     const RunRecord record =
-        codes[i] ? read_run_record(sweep.dir / run_name(i)) : RunRecord{"skipped", {}, {}};
+        codes[i] ? read_run_record(sweep.dir / run_name(i)) : RunRecord{"skipped", {}, {}, {}};
     table.rows.push_back({run_name(i), sweep.points[i], record});
   }
   return table;

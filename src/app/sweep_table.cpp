@@ -11,11 +11,22 @@
 namespace partimix::app {
 namespace {
 
+// The unit of figure `name` as the runs report it ([-] for none or when none says).
+std::string unit_of(const SweepTable& table, const std::string& name) {
+  for (const SweepRow& row : table.rows) {
+    const auto found = row.record.units.find(name);
+    if (found != row.record.units.end() && !found->second.empty())
+      return found->second;
+  }
+  return "-";
+}
+
 std::vector<std::string> header(const SweepTable& table, const std::vector<std::string>& names) {
   std::vector<std::string> cells{"run"};
   cells.insert(cells.end(), table.keys.begin(), table.keys.end());
   cells.push_back("status");
-  cells.insert(cells.end(), names.begin(), names.end());
+  for (const std::string& name : names)
+    cells.push_back(fmt::format("{} [{}]", name, unit_of(table, name)));
   cells.push_back("unreliable");
   return cells;
 }

@@ -155,13 +155,13 @@ TEST(AngleOfRepose, RegisteredByNameWithAFinalFigure) {
   ASSERT_NE(analysis, nullptr);
   ParticleStore empty;
   EXPECT_TRUE(std::isnan(sample_once(*analysis, empty, 0.0)[0]));
-  std::map<std::string, double> none;
+  Figures none;
   analysis->add_figures(none);
-  EXPECT_EQ(none.count("angle_of_repose_final"), 0u);  // a NaN angle gives no figure
+  EXPECT_FALSE(none.contains("angle_of_repose_final"));  // a NaN angle gives no figure
   ParticleStore store;
   bed(store, Frame{}, 30.0);
   const double angle = sample_once(*analysis, store, 0.0)[0];
-  std::map<std::string, double> figures;
+  Figures figures;
   analysis->add_figures(figures);
   EXPECT_DOUBLE_EQ(figures.at("angle_of_repose_final"), angle);
 }

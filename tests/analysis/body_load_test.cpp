@@ -149,7 +149,7 @@ TEST(BodyLoadsAnalysis, FiguresAreMeansOverTheLastRevolution) {
   const MovingBody body(0, analysis_test::rotation(kRotorAxis, kRotorRpm), kRotorVessel);
   BodyLoads analysis(body.options);
   analysis_test::sample_step_history(analysis, RotorStore(1.0).store(), RotorStore(2.0).store());
-  std::map<std::string, double> figures;
+  Figures figures;
   analysis.add_figures(figures);
   EXPECT_NEAR(figures.at("body0_torque_own"), -0.2975, 1e-12);
   EXPECT_NEAR(figures.at("body0_force_y"), 1.75, 1e-12);
@@ -166,7 +166,7 @@ TEST(BodyLoadsAnalysis, FiguresOfAFixedBodyAreTheLastSample) {
   const MovingBody body(0, geometry::MotionConfig{}, Vec3::Zero());
   BodyLoads analysis(body.options);
   analysis_test::sample_step_history(analysis, RotorStore(1.0).store(), RotorStore(2.0).store());
-  std::map<std::string, double> figures;
+  Figures figures;
   analysis.add_figures(figures);
   EXPECT_NEAR(figures.at("body0_force_y"), 2.0, 1e-12);
   EXPECT_NEAR(figures.at("body0_torque_own"), 0.66, 1e-12);
@@ -178,7 +178,7 @@ TEST(BodyLoadsAnalysis, FiguresOfAFixedBodyAreTheLastSample) {
 TEST(BodyLoadsAnalysis, NoSamplesNoFigures) {
   const MovingBody body(0, analysis_test::rotation(kRotorAxis, kRotorRpm), kRotorVessel);
   const BodyLoads analysis(body.options);
-  std::map<std::string, double> figures;
+  Figures figures;
   analysis.add_figures(figures);
   EXPECT_TRUE(figures.empty());
 }

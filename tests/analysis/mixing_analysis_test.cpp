@@ -115,7 +115,7 @@ TEST(MixingAnalysis, BoxHalvesOfA2DRun) {
 
 TEST(MixingAnalysis, FiguresAreTheLastValues) {
   Mixing mixing(half_discs());
-  std::map<std::string, double> figures;
+  Figures figures;
   mixing.add_figures(figures);
   EXPECT_TRUE(std::isnan(figures.at("xi_final")));  // not sampled yet
   ParticleStore segregated;
@@ -146,7 +146,7 @@ TEST(MixingAnalysis, MixingRateFiguresFitTheSampledLaceyIndex) {
   for (const double t : {1.0, 2.0, 3.0, 4.0})
     sample_once(mixing, mixed, t);
   EXPECT_TRUE(std::isnan(sample_once(mixing, untagged, 5.0)[1]));
-  std::map<std::string, double> figures;
+  Figures figures;
   mixing.add_figures(figures);
   EXPECT_EQ(figures.size(), 23u);  // xi_final, lacey_final and 7 for each of 3 models
   const std::vector<double> times{0, 1, 2, 3, 4};

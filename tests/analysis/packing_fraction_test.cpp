@@ -54,7 +54,7 @@ TEST(PackingFraction, SimpleCubicLatticeFillsPiOverSix) {
   ASSERT_EQ(packing.columns().size(), 1u);
   EXPECT_EQ(packing.columns()[0].name, "packing_fraction");
   EXPECT_NEAR(sample_once(packing, store, 0.0)[0], kPi / 6.0, 1e-12);
-  std::map<std::string, double> figures;
+  Figures figures;
   packing.add_figures(figures);
   EXPECT_NEAR(figures.at("packing_fraction_final"), kPi / 6.0, 1e-12);
 }

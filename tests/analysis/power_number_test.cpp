@@ -182,7 +182,7 @@ TEST(PowerNumberAnalysis, FiguresAreMeansOverTheLastRevolution) {
   const MovingBody body(0, rotation(kRotorAxis, kRotorRpm), kRotorVessel);
   PowerNumber analysis(rotor_options(body));
   analysis_test::sample_step_history(analysis, RotorStore(1.0).store(), RotorStore(2.0).store());
-  std::map<std::string, double> figures;
+  Figures figures;
   analysis.add_figures(figures);
   EXPECT_NEAR(figures.at("Re"), 2000.0, 1e-9);
   EXPECT_NEAR(figures.at("Np"), 59.5 * kPi / 4.0, 1e-10);
@@ -199,7 +199,7 @@ TEST(PowerNumberAnalysis, AWindowLongerThanTheRunStartsAtTheFirstSample) {
   const MovingBody body(0, rotation(kRotorAxis, kRotorRpm), kRotorVessel, 3.0);
   PowerNumber analysis(rotor_options(body));
   analysis_test::sample_step_history(analysis, RotorStore(1.0).store(), RotorStore(2.0).store());
-  std::map<std::string, double> figures;
+  Figures figures;
   analysis.add_figures(figures);
   EXPECT_NEAR(figures.at("Np"), 11.6875 * kPi, 1e-10);
   EXPECT_DOUBLE_EQ(figures.at("average_from"), 0.0);

@@ -131,12 +131,12 @@ TEST(RevolutionPeriod, FixedBodyHasNone) {
 
 TEST(ColumnHistory, FiguresAreColumnMeansAndThePrefixedWindow) {
   // a = t, b = 10 at t = 0..4, period 2, one revolution: window [2, 4], mean a = 3, b = 10.
-  ColumnHistory history({"a", "b"});
+  ColumnHistory history({{"a", "m"}, {"b", ""}});
   for (int k = 0; k <= 4; ++k) {
     const std::vector<double> row{static_cast<double>(k), 10.0};
     history.add(k, row);
   }
-  std::map<std::string, double> figures;
+  Figures figures;
   history.add_figures(figures, "p_", 2.0, 1.0);
   const std::map<std::string, double> expected{{"a", 3.0},
                                                {"b", 10.0},
@@ -146,10 +146,12 @@ TEST(ColumnHistory, FiguresAreColumnMeansAndThePrefixedWindow) {
   ASSERT_EQ(figures.size(), expected.size());
   for (const auto& [name, value] : expected)
     EXPECT_NEAR(figures.at(name), value, kTight) << name;
+  EXPECT_EQ(figures.unit("a"), "m");
+  EXPECT_EQ(figures.unit("p_average_from"), "s");
 }
 
 TEST(ColumnHistory, AFullWindowAfterTheRampHasNoCaveat) {
-  ColumnHistory history({"a"});
+  ColumnHistory history(std::vector<Column>{{"a", ""}});
   for (int k = 0; k <= 10; ++k) {
     const double value = 1.0;
     history.add(0.1 * k, std::span<const double>(&value, 1));

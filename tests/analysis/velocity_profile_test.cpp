@@ -104,7 +104,7 @@ TEST(VelocityProfile, FinalFiguresAreTheLastSampleOfTheFilledBins) {
   ParticleStore store;
   shear(store);
   VelocityProfile profile(line(Vec3::UnitX()));
-  std::map<std::string, double> figures;
+  Figures figures;
   profile.add_figures(figures);
   EXPECT_TRUE(figures.empty());
   sample_once(profile, store, 0.0);
@@ -114,7 +114,7 @@ TEST(VelocityProfile, FinalFiguresAreTheLastSampleOfTheFilledBins) {
   profile.add_figures(figures);
   ASSERT_EQ(figures.size(), 5u);  // bin 5 is empty
   EXPECT_NEAR(figures.at("velocity_profile_2_final"), 2.0 * kShearRate * 0.5, kTight);
-  EXPECT_EQ(figures.count("velocity_profile_5_final"), 0u);
+  EXPECT_FALSE(figures.contains("velocity_profile_5_final"));
 }
 
 TEST(VelocityProfile, NarrowWidthTakesOnlyTheLine) {

@@ -87,11 +87,13 @@ class MixingRun : public ::testing::Test {
     const Outcome outcome =
         run_partimix(scratch_, {"run", "case.yaml", "--out", "out", "-q", "-t", "1"});
     ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+    outcome_err_ = outcome.err;
   }
 
   fs::path out() const { return scratch_.work() / "out"; }
 
   Scratch scratch_;
+  std::string outcome_err_;
 };
 
 void expect_relative(double actual, double expected, double tolerance, const std::string& what) {
@@ -198,6 +200,17 @@ TEST_F(MixingRun, FiguresOfTheLoadsOnASeeThroughPlateCarryACaveat) {
     EXPECT_THAT(caveats.at(figure).get<std::string>(), HasSubstr("walls[1] is about")) << figure;
   EXPECT_FALSE(caveats.contains("xi_final"));
   EXPECT_THAT(run.at("warnings").at(0).get<std::string>(), HasSubstr("walls[1] is about"));
+}
+
+// Every figure has its unit in run.json, and the printed summary shows it.
+TEST_F(MixingRun, FiguresCarryTheirUnits) {
+  const nlohmann::json units = read_json(out() / "run.json").at("figure_units");
+  EXPECT_EQ(units.at("Np"), "-");
+  EXPECT_EQ(units.at("body1_torque_own"), "N m");
+  EXPECT_EQ(units.at("body1_power"), "W");
+  EXPECT_EQ(units.at("average_from"), "s");
+  EXPECT_EQ(units.size(), read_json(out() / "run.json").at("figures").size());
+  EXPECT_THAT(outcome_err_, HasSubstr("body1_torque_own [N m]"));
 }
 
 // The plots are titled with the case, and the plot of a column whose mean is a figure shows the

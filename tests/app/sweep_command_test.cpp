@@ -152,7 +152,7 @@ TEST(SweepOfAVessel, WritesTheNpRePlotWithItsFittedSlope) {
   const auto cells = read_csv_cells(scratch.work() / "s" / "sweep.csv");
   ASSERT_EQ(cells.size(), 3u);
   EXPECT_THAT(first(cells[0], 6),
-              ElementsAre("run", "fluid.viscosity", "status", "Np", "Np_total", "Re"));
+              ElementsAre("run", "fluid.viscosity", "status", "Np [-]", "Np_total [-]", "Re [-]"));
   std::smatch slope;
   ASSERT_TRUE(std::regex_search(outcome.out, slope, std::regex("slope = (\\S+)"))) << outcome.out;
   EXPECT_LT(std::stod(slope[1].str()), 0.0);

@@ -29,11 +29,12 @@ TEST(RunRecord, ReadsTheStatusAndTheNumericFigures) {
   const TempDir dir;
   const RunRecord record = record_of(dir, R"({"run": {"status": "completed", "steps": 3},
       "figures": {"Re": 1.0, "Np": 12.3, "xi_final": 0.004, "note": "text", "nan": null},
-      "caveats": {"Np": "a short window", "Re": 3}})");
+      "caveats": {"Np": "a short window", "Re": 3}, "figure_units": {"Np": "-", "xi_final": 1}})");
   EXPECT_EQ(record.status, "completed");
   EXPECT_THAT(record.figures,
               ElementsAre(Pair("Np", 12.3), Pair("Re", 1.0), Pair("xi_final", 0.004)));
   EXPECT_THAT(record.caveats, ElementsAre(Pair("Np", "a short window")));
+  EXPECT_THAT(record.units, ElementsAre(Pair("Np", "-")));
 }
 
 TEST(RunRecord, WithoutFiguresHasNone) {
@@ -54,15 +55,15 @@ SweepTable two_runs() {
   return {{"fluid.viscosity", "gravity"},
           {{"run_000",
             {"1e-3", "[0,-9.81]"},
-            {"completed", {{"Np", 40.0}, {"Re", 1.0}}, {{"Np", "a short window"}}}},
-           {"run_001", {"2e-3", "[0,-4.9]"}, {"failed", {{"xi_final", 0.25}}, {}}}}};
+            {"completed", {{"Np", 40.0}, {"Re", 1.0}}, {{"Np", "a short window"}}, {{"Np", ""}}}},
+           {"run_001", {"2e-3", "[0,-4.9]"}, {"failed", {{"xi_final", 0.25}}, {}, {}}}}};
 }
 
 TEST(SweepTable, CsvHasTheKeysTheStatusTheUnionOfTheFiguresAndTheUnreliableOnes) {
   const TempDir dir;
   write_sweep_csv(dir / "sweep.csv", two_runs());
   EXPECT_EQ(read_file(dir / "sweep.csv"),
-            "run,fluid.viscosity,gravity,status,Np,Re,xi_final,unreliable\n"
+            "run,fluid.viscosity,gravity,status,Np [-],Re [-],xi_final [-],unreliable\n"
             "run_000,1e-3,\"[0,-9.81]\",completed,40,1,,Np\n"
             "run_001,2e-3,\"[0,-4.9]\",failed,,,0.25,\n");
   EXPECT_FALSE(std::filesystem::exists(dir / "sweep.csv.tmp"));
