@@ -322,25 +322,26 @@ void Runner::loop(io::RunSummary& summary, std::optional<Progress>& progress) {
     if (!step_once(summary))
       return;
     const double t = state_.time;
-    bool written = false;
+    const bool frame_due = case_.output.frames && t >= state_.next_frame - tolerance;
+    const bool checkpoint_due =
+        time.checkpoint_interval > 0.0 && t >= state_.next_checkpoint - tolerance;
+    // run.json first: whatever a kill interrupts next, it already tells how far the run came.
+    if (frame_due || checkpoint_due)
+      write_progress(summary);
     if (t >= state_.next_sample - tolerance) {
       sample(t, state_.steps, state_.last_dt);
       state_.next_sample = next_multiple(time.sample_interval, t, tolerance);
     }
     for (AnalysisSeries& series : own_series_)
       series.sample_if_due(t, state_.steps, state_.last_dt, tolerance);
-    if (case_.output.frames && t >= state_.next_frame - tolerance) {
+    if (frame_due) {
       write_frames(t);
       state_.next_frame = next_multiple(time.output_interval, t, tolerance);
-      written = true;
     }
-    if (time.checkpoint_interval > 0.0 && t >= state_.next_checkpoint - tolerance) {
+    if (checkpoint_due) {
       state_.next_checkpoint = next_multiple(time.checkpoint_interval, t, tolerance);
       write_checkpoint();
-      written = true;
     }
-    if (written)
-      write_progress(summary);
     if (progress)
       progress->update(t, state_.steps, summary.particles);
   }

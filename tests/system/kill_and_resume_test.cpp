@@ -3,7 +3,7 @@
 // collection and figures, bit for bit, as the run that was never stopped (serial), for an SPH
 // mixer and a DEM drum; with two threads the DEM drum agrees to round-off. After every kill the
 // output folder is consistent without resuming: whole rows, a collection of complete frames,
-// a valid run.json that says the run did not finish.
+// a valid run.json that says the run did not finish and how far it had come.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -69,6 +69,8 @@ void expect_consistent(const fs::path& out, const std::string& method) {
   }
   const nlohmann::json run = read_json(out / "run.json");
   EXPECT_EQ(run.at("run").at("status"), "running");
+  // run.json follows every frame and checkpoint: past the first checkpoint it has steps.
+  EXPECT_GT(run.at("run").at("steps").get<int>(), 0) << "run.json is not updated as the run goes";
 }
 
 // Starts the run (or resumes it once it has a checkpoint) and kills it with SIGKILL a seeded
