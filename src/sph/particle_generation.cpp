@@ -162,10 +162,6 @@ void tag_tracer(const FluidSpec& fluid, ParticleStore& store) {
 
 }  // namespace
 
-double kernel_support(const Config& config) {
-  return kernel_reach(config) * config.spacing;
-}
-
 int wall_layers_for(const Config& config) {
   if (config.wall_layers)
     return *config.wall_layers;

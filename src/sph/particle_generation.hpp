@@ -14,9 +14,6 @@
 
 namespace partimix::sph {
 
-// The kernel support [m]: the radius within which particles interact.
-double kernel_support(const Config& config);
-
 // The number of wall layers: sph.wall_layers, or enough to cover the kernel support.
 int wall_layers_for(const Config& config);
 

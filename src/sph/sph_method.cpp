@@ -30,7 +30,7 @@ io::MethodInstance SphMethod::build(const io::Case& the_case, const io::MethodSp
     throw io::case_error(the_case, error.location().key_path, error.message());
   }
   if (the_case.gravity.norm() == 0.0 &&
-      has_free_surface(*instance.store, the_case.domain, kernel_support(section.config))) {
+      has_free_surface(*instance.store, the_case.domain, section.config.spacing)) {
     instance.warnings.push_back(fmt::format(
         "{}: gravity: the fluid has a free surface but gravity is zero: nothing holds the "
         "surface, and a stirred fluid is flung out of an open vessel; close the vessel with a "
