@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages partimix needs to build, test, benchmark and plot.
+# Installs the Debian 12 packages partimix needs to build, test, fuzz, benchmark and plot.
 # Idempotent: does nothing when every package is already present.
 set -euo pipefail
 
@@ -9,6 +9,9 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-matplotlib python3-numpy
   clang-format nlohmann-json3-dev libhdf5-dev
+  # `make fuzz`: clang with libFuzzer and the sanitizer runtimes (libclang_rt.fuzzer is in
+  # libclang-rt-14-dev, only recommended by clang), and clang's OpenMP
+  clang libclang-rt-14-dev libomp-14-dev
 )
 
 missing=()

@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <sstream>
+#include <system_error>
 
 #include <fmt/format.h>
 
@@ -64,10 +65,12 @@ class GrainFile {
   GrainFile(std::filesystem::path path, const std::vector<Species>& species)
       : path_(std::move(path)), species_(species) {}
 
+  // Only a regular file: a folder or a device (/dev/zero, which has no line end) is refused.
   Grains read(const io::SizeLimits& limits) {
+    std::error_code ignored;
     std::ifstream in(path_);
-    if (!in)
-      throw error(0, "cannot read the grain file: no such readable file");
+    if (!std::filesystem::is_regular_file(path_, ignored) || !in)
+      throw error(0, "cannot read the grain file: no such readable regular file");
     Grains grains;
     bool header = true;
     for (std::string line; std::getline(in, line);) {

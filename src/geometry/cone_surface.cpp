@@ -10,7 +10,6 @@ ConeSurface::ConeSurface(const Vec3& axis_point, const Vec3& axis, double radius
     : axis_point_(axis_point),
       axis_(axis.normalized()),
       radius_0_(radius_0),
-      height_(height),
       length_(std::hypot(height, radius_1 - radius_0)) {
   slope_dz_ = height / length_;
   slope_dr_ = (radius_1 - radius_0) / length_;

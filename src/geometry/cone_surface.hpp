@@ -25,7 +25,6 @@ class ConeSurface final : public Surface {
   Vec3 axis_point_;
   Vec3 axis_;
   double radius_0_;
-  double height_;
   double slope_dz_;  // the unit generator (dz, dr) in the meridian plane
   double slope_dr_;
   double length_;  // of the generator

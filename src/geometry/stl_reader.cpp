@@ -9,10 +9,13 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <initializer_list>
+#include <ios>
 #include <iterator>
 #include <string_view>
+#include <system_error>
 
 #include "core/error.hpp"
 
@@ -32,12 +35,25 @@ InputError stl_error(const std::string& path, const std::string& message, int li
   return InputError(InputLocation{path, line, column, ""}, message);
 }
 
+// Only a regular file: a folder opens as a stream and fails at its first read, with an
+// exception of the stream buffer whatever the stream's exception mask (a case whose mesh `file`
+// is "" names the case's folder), and a device or a pipe may never end (/dev/zero).
 std::string read_whole_file(const std::string& path) {
+  std::error_code error;
+  const std::filesystem::file_status status = std::filesystem::status(path, error);
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+    throw stl_error(path, "cannot read the STL file: not a regular file");
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     throw stl_error(path, "cannot read the STL file: no such readable file");
   }
-  std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  std::string bytes;
+  try {
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  } catch (const std::ios_base::failure&) {
+    throw stl_error(path, "cannot read the STL file: read error");
+  }
   if (in.bad()) {
     throw stl_error(path, "cannot read the STL file: read error");
   }

@@ -76,6 +76,14 @@ TEST(CaseGrains, ACsvWithoutARequiredColumnOrWithAnUnknownOneIsRefused) {
   EXPECT_THAT(load_error(file).message(), HasSubstr("species: 'c' is none of: a, b"));
 }
 
+// As for meshes (fuzz/regressions): a folder or an endless device is refused, not read.
+TEST(CaseGrains, AGrainFileThatIsNoRegularFileIsRefused) {
+  for (const std::string file : {"/dev/zero", "."}) {
+    const InputError error = load_error(kDem + "  grains_file: " + file + "\n");
+    EXPECT_THAT(error.message(), HasSubstr("no such readable regular file")) << file;
+  }
+}
+
 TEST(CaseGrains, ExactlyOneWayOfPlacingGrains) {
   const InputError none = load_error(kDem);
   EXPECT_EQ(none.location().key_path, "dem.fill");
