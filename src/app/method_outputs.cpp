@@ -1,6 +1,7 @@
 #include "app/method_outputs.hpp"
 
 #include <map>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -38,6 +39,20 @@ analysis::AnalysisOptions options_of(const io::AnalysisSpec& spec, const io::Cas
   return options;
 }
 
+// The analysis of `spec`; an option its constructor refuses (std::invalid_argument, e.g. a
+// profile line of zero length) is an InputError at the analysis' key, never an abort.
+std::unique_ptr<analysis::Analysis> create_analysis(const io::AnalysisSpec& spec,
+                                                    const io::Case& the_case,
+                                                    const io::MethodSection& section,
+                                                    const geometry::MovingBodies* bodies) {
+  const analysis::AnalysisOptions options = options_of(spec, the_case, section, bodies);
+  try {
+    return analysis::analysis_registry().create(spec.type, options);
+  } catch (const std::invalid_argument& error) {
+    throw InputError(the_case.locate(spec.key), error.what());
+  }
+}
+
 }  // namespace
 
 // Kinetic energy reads the particle fields at set-up: its rotational column exists only for
@@ -69,8 +84,7 @@ MethodOutputs::MethodOutputs(const io::Case& the_case, std::size_t m,
   for (const io::AnalysisSpec& spec : the_case.analyses) {
     if (spec.method != name_)
       continue;
-    analyses_.push_back(analysis::analysis_registry().create(
-        spec.type, options_of(spec, the_case, section, method.bodies.get())));
+    analyses_.push_back(create_analysis(spec, the_case, section, method.bodies.get()));
     prefixes_.push_back(spec.name.empty() ? "" : spec.name + ".");
     specs_.push_back(&spec);
     claim(spec.key, *analyses_.back(), prefixes_.back());
