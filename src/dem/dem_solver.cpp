@@ -347,6 +347,12 @@ void DemSolver::save(StateArchive& archive, const std::string& prefix) const {
 
 void DemSolver::restore(const StateArchive& archive, const std::string& prefix) {
   restore_store(store_, archive, prefix);
+  const auto species_count = static_cast<std::int32_t>(config_.species.size());
+  for (const std::int32_t s : *species_) {
+    if (s < 0 || s >= species_count)
+      throw StateError(fmt::format("{}fields/species: a grain of species {}, the case has {}",
+                                   prefix, s, species_count));
+  }
   history_->restore(archive, prefix + "contacts/");
   const auto steps = archive.integers(prefix + "steps");
   const auto settling = archive.doubles(prefix + "settling");

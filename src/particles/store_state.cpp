@@ -32,14 +32,35 @@ Values sized(Values values, std::size_t count, const std::string& path) {
   return values;
 }
 
+// Fields that hold what a particle is, fixed when the case is built: a run only reorders them.
+bool fixed_at_build(const std::string& name) {
+  return name == "id" || name == "kind" || name == "body";
+}
+
+// Whether `a` and `b` hold the same values, in any order.
+template <class T>
+bool same_values(std::vector<T> a, std::vector<T> b) {
+  std::sort(a.begin(), a.end());
+  std::sort(b.begin(), b.end());
+  return a == b;
+}
+
 template <class T>
 void restore_integers(std::deque<Field<T>>& fields, const StateArchive& archive,
                       const std::string& prefix, std::size_t count) {
   for (auto& field : fields) {
     const std::string path = field_path(prefix, field.name);
     const auto values = sized(archive.integers(path), count, path);
-    std::transform(values.begin(), values.end(), field.values.begin(),
+    std::vector<T> restored(count);
+    std::transform(values.begin(), values.end(), restored.begin(),
                    [](std::int64_t v) { return static_cast<T>(v); });
+    if (fixed_at_build(field.name) && !same_values(restored, field.values)) {
+      throw StateError(
+          fmt::format("{} holds other values than the case builds (the particles' "
+                      "{} can only be reordered by a run)",
+                      path, field.name));
+    }
+    field.values = std::move(restored);
   }
 }
 

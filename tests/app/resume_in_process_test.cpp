@@ -116,5 +116,26 @@ TEST(ResumeInProcess, ACheckpointOfOtherParticlesDoesNotFit) {
       << "a checkpoint that does not fit must not write";
 }
 
+// A checkpoint made to look right (fuzz/README.md: the header repaired) with a grain of a
+// species the case does not have, or a particle of another kind: refused, never stepped.
+TEST(ResumeInProcess, ACheckpointWithIndicesTheCaseCannotHaveDoesNotFit) {
+  const TempDir dir;
+  const io::Case the_case = test_support::load_case_text(dir, tank("0.001"));
+  ASSERT_EQ(run(the_case, dir / "out").summary.status, "completed");
+  const StateArchive good = io::CheckpointFolder(dir / "out" / "checkpoints").read_latest();
+  const auto damaged = [&good](const std::string& path, std::int64_t value) {
+    StateArchive archive = good;
+    const auto saved = good.integers(path);
+    std::vector<std::int64_t> values(saved.begin(), saved.end());
+    values.back() = value;
+    archive.put_integers(path, values);
+    return archive;
+  };
+  const StateArchive species = damaged("methods/dem/fields/species", 7);
+  EXPECT_THROW(run(the_case, dir / "a", &species), StateError);
+  const StateArchive kind = damaged("methods/sph/fields/kind", 5);
+  EXPECT_THROW(run(the_case, dir / "b", &kind), StateError);
+}
+
 }  // namespace
 }  // namespace partimix::app
