@@ -33,10 +33,8 @@ TEST(StlFuzzRegression, FolderIsAnInputError) {
   expect_not_a_regular_file((dir.path() / "").string());
 }
 
+// /dev/zero exists on every Linux the project builds on (Debian 12).
 TEST(StlFuzzRegression, EndlessDeviceIsAnInputError) {
-  if (!std::filesystem::exists("/dev/zero")) {
-    GTEST_SKIP() << "no /dev/zero";
-  }
   expect_not_a_regular_file("/dev/zero");
 }
 
