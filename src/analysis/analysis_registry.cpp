@@ -2,6 +2,8 @@
 #include "analysis/angle_of_repose.hpp"
 #include "analysis/body_loads.hpp"
 #include "analysis/front_position.hpp"
+#include "analysis/height_profile.hpp"
+#include "analysis/mass_in_region.hpp"
 #include "analysis/mixing.hpp"
 #include "analysis/packing_fraction.hpp"
 #include "analysis/power_number.hpp"
@@ -25,6 +27,10 @@ const Registry<Analysis, const AnalysisOptions&>& analysis_registry() {
           [](const AnalysisOptions& o) { return std::make_unique<VelocityProfile>(o.profile); });
     r.add("angle_of_repose",
           [](const AnalysisOptions& o) { return std::make_unique<AngleOfRepose>(o.repose); });
+    r.add("mass_in_region",
+          [](const AnalysisOptions& o) { return std::make_unique<MassInRegion>(o.region_mass); });
+    r.add("height_profile",
+          [](const AnalysisOptions& o) { return std::make_unique<HeightProfile>(o.height); });
     return r;
   }();
   return registry;

@@ -1,8 +1,10 @@
 #pragma once
 // Settings of the bed measurements (docs/mixing.md, "Measurements of a granular bed";
-// docs/case-reference.md, "analyses"): packing_fraction, velocity_profile and angle_of_repose.
-// They sit apart from the analyses so that AnalysisOptions and the case's AnalysisSpec can hold
-// them.
+// docs/case-reference.md, "analyses"): packing_fraction, velocity_profile, angle_of_repose,
+// mass_in_region and height_profile. They sit apart from the analyses so that AnalysisOptions
+// and the case's AnalysisSpec can hold them.
+#include <limits>
+
 #include "core/vec.hpp"
 
 namespace partimix::analysis {
@@ -35,6 +37,25 @@ struct ReposeSection {
   Vec3 down = -Vec3::UnitY();
   int bins = 20;
   double trim = 0.2;
+};
+
+// mass_in_region: an axis-aligned box [lo, hi] (faces included; a flat z side in 2D runs), and
+// the span [fit_from, fit_until] of sample times over which the discharge rate is fitted.
+struct MassRegion {
+  Vec3 lo = Vec3::Zero();
+  Vec3 hi = Vec3::Zero();
+  double fit_from = 0.0;                                       // [s]
+  double fit_until = std::numeric_limits<double>::infinity();  // [s]
+};
+
+// height_profile: [from, to] along the coordinate `axis` (0, 1, 2 for x, y, z) cut into `bins`
+// equal bins; the height is the coordinate `vertical`.
+struct HeightLine {
+  int axis = 0;
+  int vertical = 1;
+  double from = 0.0;  // [m]
+  double to = 1.0;    // [m]
+  int bins = 10;
 };
 
 }  // namespace partimix::analysis

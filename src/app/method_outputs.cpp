@@ -25,6 +25,8 @@ analysis::AnalysisOptions options_of(const io::AnalysisSpec& spec, const io::Cas
   options.packing = spec.packing;
   options.profile = spec.profile;
   options.repose = spec.repose;
+  options.region_mass = spec.region_mass;
+  options.height = spec.height;
   if (spec.type == "body_loads" || spec.type == "power_number") {
     if (bodies == nullptr || static_cast<std::size_t>(spec.body) >= bodies->count()) {
       throw InputError(the_case.locate(spec.key + ".body"),

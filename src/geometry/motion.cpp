@@ -3,6 +3,7 @@
 #include "geometry/fixed_motion.hpp"
 #include "geometry/planetary_motion.hpp"
 #include "geometry/rotation_motion.hpp"
+#include "geometry/translation_motion.hpp"
 
 namespace partimix::geometry {
 
@@ -16,6 +17,9 @@ const Registry<Motion, const MotionConfig&>& motion_registry() {
     r.add("planetary", [](const MotionConfig& c) {
       return std::make_unique<PlanetaryMotion>(c.axis_point, c.centre, c.axis, c.rpm,
                                                c.revolution_rpm, c.ramp_time);
+    });
+    r.add("translation", [](const MotionConfig& c) {
+      return std::make_unique<TranslationMotion>(c.velocity, c.start, c.stop);
     });
     return r;
   }();

@@ -4,6 +4,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -14,9 +15,27 @@
 namespace partimix::io {
 namespace {
 
-const std::vector<std::string> kTypes{"front_position", "body_loads",       "power_number",
-                                      "mixing",         "packing_fraction", "velocity_profile",
-                                      "angle_of_repose"};
+const std::vector<std::string> kTypes{"front_position",  "body_loads",       "power_number",
+                                      "mixing",          "packing_fraction", "velocity_profile",
+                                      "angle_of_repose", "mass_in_region",   "height_profile"};
+
+constexpr int kMostBins = 1000;  // of a profile: one series.csv column each
+
+// The corners `min` and `max` of an axis-aligned box, max > min along every axis.
+void read_box(Reader& reader, int dimensions, Vec3& lo, Vec3& hi) {
+  lo = reader.vector("min", dimensions);
+  hi = reader.vector("max", dimensions);
+  for (int k = 0; k < dimensions; ++k) {
+    if (!(hi[k] > lo[k]))
+      throw reader.error("max", "max must exceed min along every axis");
+  }
+}
+
+// Refuses a profile of more than kMostBins bins.
+void check_bins(Reader& item, int bins) {
+  if (bins > kMostBins)
+    throw item.error("bins", fmt::format("at most {} bins", kMostBins));
+}
 
 // body, vessel_axis_point and average_revolutions of body_loads and power_number.
 void read_body(Reader& item, AnalysisSpec& analysis, int dimensions,
@@ -91,12 +110,7 @@ void read_cylinder_region(Reader& item, analysis::MixingRegion& region, int dime
 
 void read_box_region(Reader& item, analysis::MixingRegion& region, int dimensions) {
   region.cylinder = false;
-  region.lo = item.vector("min", dimensions);
-  region.hi = item.vector("max", dimensions);
-  for (int k = 0; k < dimensions; ++k) {
-    if (!(region.hi[k] > region.lo[k]))
-      throw item.error("max", "max must exceed min along every axis");
-  }
+  read_box(item, dimensions, region.lo, region.hi);
   region.cells = read_cells(item, dimensions);
 }
 
@@ -117,26 +131,19 @@ void read_mixing(Reader& item, AnalysisSpec& analysis, int dimensions,
 
 // packing_fraction: the box [min, max].
 void read_packing_fraction(Reader& item, AnalysisSpec& analysis, int dimensions) {
-  analysis.packing.lo = item.vector("min", dimensions);
-  analysis.packing.hi = item.vector("max", dimensions);
-  for (int k = 0; k < dimensions; ++k) {
-    if (!(analysis.packing.hi[k] > analysis.packing.lo[k]))
-      throw item.error("max", "max must exceed min along every axis");
-  }
+  read_box(item, dimensions, analysis.packing.lo, analysis.packing.hi);
 }
 
 // velocity_profile: the segment [start, end], bins, width and the component (a direction or the
 // word speed).
 void read_velocity_profile(Reader& item, AnalysisSpec& analysis, int dimensions) {
-  constexpr int kMostBins = 1000;  // one series.csv column each
   analysis::ProfileLine& line = analysis.profile;
   line.start = item.vector("start", dimensions);
   line.end = item.vector("end", dimensions);
   if (line.end == line.start)
     throw item.error("end", "end must differ from start");
   line.bins = item.optional<int>("bins", line.bins, at_least(1));
-  if (line.bins > kMostBins)
-    throw item.error("bins", fmt::format("at most {} bins", kMostBins));
+  check_bins(item, line.bins);
   line.width = item.required<double>("width", kPositive);
   const std::string expected = fmt::format(
       "expected the word speed or a direction (a list of {} numbers, not all zero)", dimensions);
@@ -176,6 +183,36 @@ void read_angle_of_repose(Reader& item, AnalysisSpec& analysis, int dimensions) 
   section.trim = item.optional<double>("trim", section.trim, kNonNegative);
   if (!(section.trim < 0.5))
     throw item.error("trim", "trim must be below 0.5 (it is dropped at each end)");
+}
+
+// mass_in_region: the box `region: {min, max}` and the fit window [fit_from, fit_until] (no end
+// for `auto`).
+void read_mass_in_region(Reader& item, AnalysisSpec& analysis, int dimensions) {
+  analysis::MassRegion& region = analysis.region_mass;
+  Reader box = item.map("region");
+  read_box(box, dimensions, region.lo, region.hi);
+  box.done();
+  region.fit_from = item.optional<double>("fit_from", region.fit_from, kNonNegative);
+  if (const std::optional<double> until = item.automatic<double>("fit_until", kPositive)) {
+    if (!(*until > region.fit_from))
+      throw item.error("fit_until", "fit_until must be later than fit_from");
+    region.fit_until = *until;
+  }
+}
+
+// height_profile: the binned axis, the vertical axis, the span [from, to] and the bins.
+void read_height_profile(Reader& item, AnalysisSpec& analysis, int dimensions) {
+  analysis::HeightLine& line = analysis.height;
+  line.axis = axis_index(item.required_choice("axis", axis_names(dimensions)));
+  line.vertical = axis_index(item.required_choice("vertical", axis_names(dimensions)));
+  if (line.vertical == line.axis)
+    throw item.error("vertical", "vertical must differ from axis");
+  line.from = item.required<double>("from");
+  line.to = item.required<double>("to");
+  if (!(line.to > line.from))
+    throw item.error("to", "to must exceed from");
+  line.bins = item.required<int>("bins", at_least(1));
+  check_bins(item, line.bins);
 }
 
 // The method whose particles the analysis measures: `method`, by default the first of the case.
@@ -226,10 +263,33 @@ void read_schedule(Reader& item, AnalysisSpec& analysis, const Case& the_case) {
   }
 }
 
+// The keys of the analysis' own type.
+void read_type_keys(Reader& item, AnalysisSpec& analysis, const Case& the_case,
+                    const MethodSection& section) {
+  const int dimensions = the_case.domain.dimensions;
+  if (analysis.type == "front_position")
+    analysis.axis = axis_index(item.choice("axis", "x", axis_names(dimensions)));
+  if (analysis.type == "body_loads" || analysis.type == "power_number")
+    read_body(item, analysis, dimensions, the_case.walls);
+  if (analysis.type == "power_number")
+    read_power_number(item, analysis, the_case, section);
+  if (analysis.type == "mixing")
+    read_mixing(item, analysis, dimensions, section);
+  if (analysis.type == "packing_fraction")
+    read_packing_fraction(item, analysis, dimensions);
+  if (analysis.type == "velocity_profile")
+    read_velocity_profile(item, analysis, dimensions);
+  if (analysis.type == "angle_of_repose")
+    read_angle_of_repose(item, analysis, dimensions);
+  if (analysis.type == "mass_in_region")
+    read_mass_in_region(item, analysis, dimensions);
+  if (analysis.type == "height_profile")
+    read_height_profile(item, analysis, dimensions);
+}
+
 }  // namespace
 
 std::vector<AnalysisSpec> read_analyses(Reader& root, const Case& the_case) {
-  const int dimensions = the_case.domain.dimensions;
   std::vector<AnalysisSpec> analyses;
   for (Reader& item : root.optional_list("analyses")) {
     AnalysisSpec analysis;
@@ -244,21 +304,7 @@ std::vector<AnalysisSpec> read_analyses(Reader& root, const Case& the_case) {
       }
     }
     read_schedule(item, analysis, the_case);
-    const MethodSection& section = read_method(item, analysis, the_case);
-    if (analysis.type == "front_position")
-      analysis.axis = axis_index(item.choice("axis", "x", axis_names(dimensions)));
-    if (analysis.type == "body_loads" || analysis.type == "power_number")
-      read_body(item, analysis, dimensions, the_case.walls);
-    if (analysis.type == "power_number")
-      read_power_number(item, analysis, the_case, section);
-    if (analysis.type == "mixing")
-      read_mixing(item, analysis, dimensions, section);
-    if (analysis.type == "packing_fraction")
-      read_packing_fraction(item, analysis, dimensions);
-    if (analysis.type == "velocity_profile")
-      read_velocity_profile(item, analysis, dimensions);
-    if (analysis.type == "angle_of_repose")
-      read_angle_of_repose(item, analysis, dimensions);
+    read_type_keys(item, analysis, the_case, read_method(item, analysis, the_case));
     item.done();
     analyses.push_back(analysis);
   }

@@ -58,6 +58,9 @@ struct WallSpec {
   geometry::MotionConfig motion;  // prescribed motion of this wall as a body
   bool solid = false;  // true: layers inside the shape (an impeller), not outside (a container)
   WallMaterial material;
+  // How a grid method (MPM) holds the material at this wall: no_slip, slip or friction (Coulomb,
+  // with material.friction); docs/mpm.md, "Walls".
+  std::string boundary = "no_slip";
   // Why shape is null, as an error at the wall's `file` key, for the methods that need a shape.
   std::optional<InputError> no_shape;
 };
@@ -71,8 +74,8 @@ struct OutputSpec {
 // front_position: the largest coordinate of any fluid particle along `axis` (dam break).
 // body_loads, power_number: the load on wall `body` and its power and Reynolds numbers
 // (docs/power.md). mixing: uniformity and Lacey indices of the tracer (docs/mixing.md).
-// packing_fraction, velocity_profile, angle_of_repose: measurements of a granular bed
-// (docs/mixing.md, "Measurements of a granular bed").
+// packing_fraction, velocity_profile, angle_of_repose, mass_in_region, height_profile:
+// measurements of a granular bed (docs/mixing.md, "Measurements of a granular bed").
 struct AnalysisSpec {
   std::string type;
   std::string key;   // where it is in the case: "analyses[i]"
@@ -90,9 +93,11 @@ struct AnalysisSpec {
   double diameter = 0.0;
   double metzner_otto = 7.54;
   analysis::MixingRegion mixing;
-  analysis::PackingBox packing;    // packing_fraction
-  analysis::ProfileLine profile;   // velocity_profile
-  analysis::ReposeSection repose;  // angle_of_repose
+  analysis::PackingBox packing;      // packing_fraction
+  analysis::ProfileLine profile;     // velocity_profile
+  analysis::ReposeSection repose;    // angle_of_repose
+  analysis::MassRegion region_mass;  // mass_in_region
+  analysis::HeightLine height;       // height_profile
 };
 
 // What a method read from its own sections of the case file. Each method derives its own type;

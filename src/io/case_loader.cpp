@@ -57,6 +57,7 @@ SizeLimits read_limits(Reader& root) {
   limits.steps = section.optional<double>("steps", limits.steps, at_least(1.0));
   limits.series_rows = section.optional<double>("series_rows", limits.series_rows, at_least(1.0));
   limits.frames = section.optional<double>("frames", limits.frames, at_least(1.0));
+  limits.grid_nodes = section.optional<double>("grid_nodes", limits.grid_nodes, at_least(1.0));
   section.done();
   return limits;
 }

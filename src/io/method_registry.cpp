@@ -2,6 +2,7 @@
 // line here.
 #include "dem/dem_method.hpp"
 #include "io/method_type.hpp"
+#include "mpm/mpm_method.hpp"
 #include "sph/sph_method.hpp"
 
 namespace partimix::io {
@@ -11,6 +12,7 @@ const Registry<MethodType>& method_registry() {
     Registry<MethodType> r;
     r.add("sph", [] { return std::make_unique<sph::SphMethod>(); });
     r.add("dem", [] { return std::make_unique<dem::DemMethod>(); });
+    r.add("mpm", [] { return std::make_unique<mpm::MpmMethod>(); });
     return r;
   }();
   return registry;

@@ -1,5 +1,7 @@
 #include "io/motion_section.hpp"
 
+#include <optional>
+
 namespace partimix::io {
 
 namespace {
@@ -14,13 +16,25 @@ Vec3 read_axis(Reader& section, int dimensions) {
   return axis.normalized();
 }
 
+// translation: the velocity, and the times it starts and stops (never, for `auto`).
+void read_translation(Reader& section, geometry::MotionConfig& motion, int dimensions) {
+  motion.velocity = section.vector("velocity", dimensions);
+  motion.start = section.optional<double>("start", motion.start, kNonNegative);
+  if (const std::optional<double> stop = section.automatic<double>("stop", kNonNegative)) {
+    if (!(*stop > motion.start))
+      throw section.error("stop", "stop must be later than start");
+    motion.stop = *stop;
+  }
+}
+
 }  // namespace
 
 geometry::MotionConfig read_motion(Reader& item, int dimensions) {
   Reader section = item.optional_map("motion");
   geometry::MotionConfig motion;
-  motion.type = section.choice("type", motion.type, {"fixed", "rotation", "planetary"});
-  if (motion.type != "fixed") {
+  motion.type =
+      section.choice("type", motion.type, {"fixed", "rotation", "planetary", "translation"});
+  if (motion.type == "rotation" || motion.type == "planetary") {
     motion.axis = read_axis(section, dimensions);
     motion.axis_point = section.vector("axis_point", dimensions, Vec3::Zero());
     motion.rpm = section.required<double>("rpm");
@@ -30,6 +44,8 @@ geometry::MotionConfig read_motion(Reader& item, int dimensions) {
     motion.centre = section.vector("centre", dimensions, Vec3::Zero());
     motion.revolution_rpm = section.required<double>("revolution_rpm");
   }
+  if (motion.type == "translation")
+    read_translation(section, motion, dimensions);
   section.done();
   return motion;
 }

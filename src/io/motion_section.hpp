@@ -1,6 +1,6 @@
 #pragma once
-// The `motion:` map of a wall (docs/case-reference.md, "walls"): fixed, rotation or planetary,
-// shared by the SPH walls and the DEM walls.
+// The `motion:` map of a wall (docs/case-reference.md, "walls"): fixed, rotation, planetary or
+// translation, shared by the SPH walls and the DEM walls.
 #include "geometry/motion.hpp"
 #include "io/yaml_reader.hpp"
 

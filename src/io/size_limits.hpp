@@ -11,6 +11,7 @@ struct SizeLimits {
   double steps = 1.0e8;           // time.end over the first time step
   double series_rows = 1.0e6;     // time.end over time.sample_interval
   double frames = 1.0e5;          // time.end over time.output_interval
+  double grid_nodes = 5.0e7;      // nodes of a method's background grid; about 6 GB for MPM
 };
 
 }  // namespace partimix::io

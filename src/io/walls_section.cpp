@@ -95,6 +95,9 @@ WallSpec read_wall(Reader& item, int dimensions, const std::filesystem::path& fo
     wall.surface = wall.shape->make_surface(wall.solid, wall.open_faces);
   wall.motion = read_motion(item, dimensions);
   wall.material = read_material(item);
+  wall.boundary = item.choice("boundary", "no_slip", {"no_slip", "slip", "friction"});
+  if (wall.boundary == "friction" && !wall.material.friction)
+    throw item.error("boundary", "boundary: friction needs material.friction (mu_w)");
   return wall;
 }
 

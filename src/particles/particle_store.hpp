@@ -15,8 +15,9 @@
 namespace partimix {
 
 // What a particle is. Wall particles are fixed boundary particles of a vessel or body (SPH);
-// grains are the spheres of DEM. Fluid and grains are the material that analyses measure.
-enum class ParticleKind : std::int32_t { fluid = 0, wall = 1, grain = 2 };
+// grains are the spheres of DEM; material points carry a continuum (MPM). Fluid, grains and
+// material points are the material that analyses measure.
+enum class ParticleKind : std::int32_t { fluid = 0, wall = 1, grain = 2, material_point = 3 };
 
 template <class T>
 struct Field {

@@ -1,0 +1,51 @@
+#pragma once
+// What the `mpm:` section and the shared walls say for the material point method
+// (docs/case-reference.md, "mpm"; docs/mpm.md).
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/vec.hpp"
+#include "geometry/motion.hpp"
+#include "geometry/shape.hpp"
+#include "geometry/surface.hpp"
+#include "materials/granular/granular_material.hpp"
+
+namespace partimix::mpm {
+
+// A region filled with material points on a lattice of `spacing` (docs/mpm.md, "Filling").
+struct PointFill {
+  std::shared_ptr<const geometry::Shape> region;
+  double spacing = 0.0;
+  int material = 0;  // index into MpmConfig::materials
+  int tag = 0;       // the points' tag (1: a tracer for the mixing analyses)
+  Vec3 velocity = Vec3::Zero();
+  bool geostatic = false;
+  std::optional<double> lateral_stress_ratio;  // K0; default Jaky's 1 - sin(atan mu_s)
+};
+
+// How a wall acts on the grid nodes on or behind it (docs/mpm.md, "Walls").
+enum class GridBoundary { no_slip, slip, friction };
+
+struct GridWall {
+  std::shared_ptr<const geometry::Surface> surface;
+  geometry::MotionConfig motion;
+  GridBoundary boundary = GridBoundary::no_slip;
+  double friction = 0.0;  // mu_w, for GridBoundary::friction
+};
+
+struct MpmConfig {
+  double cell_size = 0.0;                  // h [m]
+  std::string shape_function = "bspline";  // linear | gimp | bspline
+  bool apic = true;                        // transfer: apic, else flip
+  double flip_fraction = 0.99;             // alpha of the FLIP/PIC blend
+  bool musl = true;                        // update: musl, else usl
+  double cfl = 0.3;
+  double max_grid_nodes = 5.0e7;  // limits.grid_nodes
+  std::vector<materials::GranularMaterial> materials;
+  std::vector<PointFill> fills;
+  std::vector<GridWall> walls;
+};
+
+}  // namespace partimix::mpm

@@ -1,0 +1,59 @@
+#pragma once
+// The transfers between material points and grid nodes of one MPM step (docs/mpm.md,
+// "Balance laws", "Transfers"). Points-to-grid are gathers over each node's buckets
+// (grid/node_buckets.hpp); grid-to-points are loops over the points. Each writes only what it
+// owns, so the results do not depend on the thread count.
+#include <span>
+#include <vector>
+
+#include "core/vec.hpp"
+#include "grid/cartesian_grid.hpp"
+#include "grid/node_buckets.hpp"
+#include "grid/point_stencil.hpp"
+#include "mpm/grid_fields.hpp"
+
+namespace partimix::mpm {
+
+// The points as the transfers read them, one entry per point.
+struct PointView {
+  std::span<const grid::PointStencil> stencils;
+  std::span<const double> mass;
+  std::span<const Vec3> velocity;
+  std::span<const Mat3> affine;         // C_p (zero with FLIP)
+  std::span<const Mat3> stress_volume;  // V_p sigma_p
+};
+
+// Mass, momentum (with APIC's affine part) and force (internal and gravity) on every active
+// node, then the velocity momentum / mass (zero below `min_mass`).
+void points_to_grid(const grid::CartesianGrid& grid, const grid::NodeBuckets& buckets,
+                    const PointView& points, const Vec3& gravity, double min_mass,
+                    GridFields& nodes);
+
+// Momentum only, into nodes.velocity_new as velocity (the MUSL re-map), same masses.
+void momentum_to_grid(const grid::CartesianGrid& grid, const grid::NodeBuckets& buckets,
+                      const PointView& points, double min_mass, GridFields& nodes);
+
+// v_new = v + dt f / m on every active node with mass.
+void advance_nodes(const grid::NodeBuckets& buckets, double dt, double min_mass, GridFields& nodes);
+
+// What grid-to-point gives a point: its velocity on the grid (positions move with it) and
+// APIC's affine velocity or FLIP's blended velocity.
+struct TransferOptions {
+  bool apic = true;
+  double flip_fraction = 0.99;
+  double apic_inertia = 0.0;  // D_p / h^2 when constant, else 0: the gradient form
+};
+
+// Sets velocity, affine and grid_velocity of every point from nodes.velocity_new (and, for FLIP,
+// nodes.velocity).
+void grid_to_points(const grid::CartesianGrid& grid, std::span<const grid::PointStencil> stencils,
+                    const GridFields& nodes, const TransferOptions& options,
+                    std::span<Vec3> velocity, std::span<Mat3> affine,
+                    std::span<Vec3> grid_velocity);
+
+// L_p = sum_i v_i grad w_ip^T from the nodal velocities `nodal`.
+void velocity_gradients(const grid::CartesianGrid& grid,
+                        std::span<const grid::PointStencil> stencils,
+                        const std::vector<Vec3>& nodal, std::span<Mat3> gradient);
+
+}  // namespace partimix::mpm
