@@ -106,14 +106,14 @@ void MpmSolver::step(double dt) {
   ++steps_;
 }
 
-// Volume by det(I + dt L), density, and the granular stress update of each point.
+// Volume by exp(dt tr L) (docs/mpm.md, "Density and volume"), density, and the granular
+// stress update of each point.
 void MpmSolver::update_stresses(double dt) {
   const std::ptrdiff_t count = static_cast<std::ptrdiff_t>(store_.size());
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t p = 0; p < count; ++p) {
     const materials::GranularMaterial& material = config_.materials[fields_.material.values[p]];
-    const Mat3 increment = Mat3::Identity() + dt * gradient_[p];
-    fields_.volume.values[p] *= increment.determinant();
+    fields_.volume.values[p] *= std::exp(dt * gradient_[p].trace());
     const double density = store_.mass()[p] / fields_.volume.values[p];
     materials::GranularPoint point{fields_.stress(p), fields_.pressure.values[p],
                                    fields_.plastic_strain.values[p],
