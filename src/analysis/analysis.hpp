@@ -89,6 +89,7 @@ struct AnalysisOptions {
   ProfileLine profile;     // velocity_profile
   ReposeSection repose;    // angle_of_repose
   MassRegion region_mass;  // mass_in_region
+  FluxPlane flux;          // mass_flux
   HeightLine height;       // height_profile
 };
 

@@ -3,6 +3,7 @@
 #include "analysis/body_loads.hpp"
 #include "analysis/front_position.hpp"
 #include "analysis/height_profile.hpp"
+#include "analysis/mass_flux.hpp"
 #include "analysis/mass_in_region.hpp"
 #include "analysis/mixing.hpp"
 #include "analysis/packing_fraction.hpp"
@@ -25,6 +26,7 @@ const Registry<Analysis, const AnalysisOptions&>& analysis_registry() {
           [](const AnalysisOptions& o) { return std::make_unique<PackingFraction>(o.packing); });
     r.add("velocity_profile",
           [](const AnalysisOptions& o) { return std::make_unique<VelocityProfile>(o.profile); });
+    r.add("mass_flux", [](const AnalysisOptions& o) { return std::make_unique<MassFlux>(o.flux); });
     r.add("angle_of_repose",
           [](const AnalysisOptions& o) { return std::make_unique<AngleOfRepose>(o.repose); });
     r.add("mass_in_region",

@@ -48,6 +48,15 @@ struct MassRegion {
   double fit_until = std::numeric_limits<double>::infinity();  // [s]
 };
 
+// mass_flux: the plane through `point` with unit `normal`, the band of `width` about it, and the
+// time from which the mean flux is taken.
+struct FluxPlane {
+  Vec3 point = Vec3::Zero();
+  Vec3 normal = -Vec3::UnitY();
+  double width = 0.0;         // [m]
+  double average_from = 0.0;  // [s]
+};
+
 // height_profile: [from, to] along the coordinate `axis` (0, 1, 2 for x, y, z) cut into `bins`
 // equal bins; the height is the coordinate `vertical`.
 struct HeightLine {

@@ -26,6 +26,7 @@ analysis::AnalysisOptions options_of(const io::AnalysisSpec& spec, const io::Cas
   options.profile = spec.profile;
   options.repose = spec.repose;
   options.region_mass = spec.region_mass;
+  options.flux = spec.flux;
   options.height = spec.height;
   if (spec.type == "body_loads" || spec.type == "power_number") {
     if (bodies == nullptr || static_cast<std::size_t>(spec.body) >= bodies->count()) {

@@ -15,9 +15,9 @@
 namespace partimix::io {
 namespace {
 
-const std::vector<std::string> kTypes{"front_position",  "body_loads",       "power_number",
-                                      "mixing",          "packing_fraction", "velocity_profile",
-                                      "angle_of_repose", "mass_in_region",   "height_profile"};
+const std::vector<std::string> kTypes{
+    "front_position",   "body_loads",      "power_number",   "mixing",         "packing_fraction",
+    "velocity_profile", "angle_of_repose", "mass_in_region", "height_profile", "mass_flux"};
 
 constexpr int kMostBins = 1000;  // of a profile: one series.csv column each
 
@@ -200,6 +200,18 @@ void read_mass_in_region(Reader& item, AnalysisSpec& analysis, int dimensions) {
   }
 }
 
+// mass_flux: the plane (`point`, `normal`), the band's `width` and `average_from`.
+void read_mass_flux(Reader& item, AnalysisSpec& analysis, int dimensions) {
+  analysis::FluxPlane& plane = analysis.flux;
+  plane.point = item.vector("point", dimensions);
+  const Vec3 normal = item.vector("normal", dimensions);
+  if (!(normal.norm() > 0.0))
+    throw item.error("normal", "normal must not be zero");
+  plane.normal = normal.normalized();
+  plane.width = item.required<double>("width", kPositive);
+  plane.average_from = item.optional<double>("average_from", 0.0, kNonNegative);
+}
+
 // height_profile: the binned axis, the vertical axis, the span [from, to] and the bins.
 void read_height_profile(Reader& item, AnalysisSpec& analysis, int dimensions) {
   analysis::HeightLine& line = analysis.height;
@@ -283,6 +295,8 @@ void read_type_keys(Reader& item, AnalysisSpec& analysis, const Case& the_case,
     read_angle_of_repose(item, analysis, dimensions);
   if (analysis.type == "mass_in_region")
     read_mass_in_region(item, analysis, dimensions);
+  if (analysis.type == "mass_flux")
+    read_mass_flux(item, analysis, dimensions);
   if (analysis.type == "height_profile")
     read_height_profile(item, analysis, dimensions);
 }

@@ -97,6 +97,7 @@ struct AnalysisSpec {
   analysis::ProfileLine profile;     // velocity_profile
   analysis::ReposeSection repose;    // angle_of_repose
   analysis::MassRegion region_mass;  // mass_in_region
+  analysis::FluxPlane flux;          // mass_flux
   analysis::HeightLine height;       // height_profile
 };
 

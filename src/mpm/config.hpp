@@ -35,6 +35,25 @@ struct GridWall {
   double friction = 0.0;  // mu_w, for GridBoundary::friction
 };
 
+// An exit plane (docs/mpm.md, "Exits and feeds"): a point beyond it, (x - point) . normal > 0,
+// leaves the run and its mass is counted.
+struct PointExit {
+  Vec3 point = Vec3::Zero();
+  Vec3 normal = -Vec3::UnitY();  // unit, the way the material leaves
+};
+
+// A feed (docs/mpm.md, "Exits and feeds"): the region is kept full. Every step, while the
+// region holds less than its full mass (rho_c times its lattice cells) by half a point or more,
+// the empty lattice cells (of `spacing`) get a point each, in the lattice's order, at the
+// cell's centre, stress-free at the critical density, moving with `velocity`.
+struct PointFeed {
+  std::shared_ptr<const geometry::Shape> region;
+  double spacing = 0.0;
+  int material = 0;
+  int tag = 0;
+  Vec3 velocity = Vec3::Zero();
+};
+
 struct MpmConfig {
   double cell_size = 0.0;                  // h [m]
   std::string shape_function = "bspline";  // linear | gimp | bspline
@@ -46,6 +65,8 @@ struct MpmConfig {
   std::vector<materials::GranularMaterial> materials;
   std::vector<PointFill> fills;
   std::vector<GridWall> walls;
+  std::vector<PointExit> exits;
+  std::vector<PointFeed> feeds;
 };
 
 }  // namespace partimix::mpm

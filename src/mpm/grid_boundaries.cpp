@@ -40,8 +40,8 @@ GridBoundaries::GridBoundaries(const grid::CartesianGrid& grid, const std::vecto
   first_[grid.node_count()] = static_cast<std::uint32_t>(contacts_.size());
 }
 
-// Whether x is on or behind the wall's surface (gap <= 0), and the normal there; a moving wall
-// is asked in its own frame at t = 0 through `pose`.
+// Whether x is on or behind the wall's surface (gap <= 0, to round-off), and the normal there; a
+// moving wall is asked in its own frame at t = 0 through `pose`.
 bool GridBoundaries::contact(const GridWall& wall, const geometry::RigidPose* pose, const Vec3& x,
                              Vec3& normal) const {
   const double reach = 3.0 * grid_.cell_size();
@@ -49,7 +49,8 @@ bool GridBoundaries::contact(const GridWall& wall, const geometry::RigidPose* po
   if (pose != nullptr)
     local = pose->rotation.transpose() * (x - pose->origin) + pose->start_origin;
   geometry::SurfacePoint point;
-  if (!wall.surface->nearest(local, reach, point) || point.gap > 0.0)
+  // A node on the surface is behind it: round-off in the node's coordinate must not decide.
+  if (!wall.surface->nearest(local, reach, point) || point.gap > 1e-9 * grid_.cell_size())
     return false;
   normal = pose != nullptr ? Vec3(pose->rotation * point.normal) : point.normal;
   return true;

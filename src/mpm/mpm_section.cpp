@@ -57,12 +57,24 @@ int material_index(Reader& item, const std::vector<materials::GranularMaterial>&
   throw item.error("material", fmt::format("no material named '{}' in mpm.materials", name));
 }
 
+// A region of points: the shapes of fluid and grain regions, and in 3D a cone (a hopper's
+// inside).
+std::shared_ptr<const geometry::Shape> read_region(Reader& item, int dimensions,
+                                                   const std::filesystem::path& folder) {
+  Reader region = item.map("region");
+  std::vector<std::string> kinds{"box", "cylinder", "plate", "mesh"};
+  if (dimensions == 3)
+    kinds.push_back("cone");
+  const std::string kind = region.required_choice("shape", kinds);
+  auto shape = io::read_shape_of(kind, region, dimensions, folder);
+  region.done();
+  return shape;
+}
+
 PointFill read_fill(Reader& item, const MpmConfig& config, int dimensions,
                     const std::filesystem::path& folder) {
   PointFill fill;
-  Reader region = item.map("region");
-  fill.region = io::read_shape(region, dimensions, folder);
-  region.done();
+  fill.region = read_region(item, dimensions, folder);
   fill.spacing = item.required<double>("spacing", kPositive);
   if (fill.spacing > config.cell_size)
     throw item.error("spacing", fmt::format("must be at most mpm.cell_size = {:.6g} m (at least "
@@ -119,6 +131,26 @@ std::shared_ptr<MpmSection> read_mpm_section(Reader& root, const io::Case& the_c
   }
   for (const io::WallSpec& wall : the_case.walls)
     config.walls.push_back(grid_wall(wall));
+  for (Reader& item : section.optional_list("exits")) {
+    PointExit exit;
+    exit.point = item.vector("point", the_case.domain.dimensions);
+    const Vec3 normal = item.vector("normal", the_case.domain.dimensions);
+    if (!(normal.norm() > 0.0))
+      throw item.error("normal", "must not be zero");
+    exit.normal = normal.normalized();
+    item.done();
+    config.exits.push_back(exit);
+  }
+  for (Reader& item : section.optional_list("feeds")) {
+    PointFeed feed;
+    feed.region = read_region(item, the_case.domain.dimensions, folder);
+    feed.spacing = item.required<double>("spacing", kPositive);
+    feed.material = material_index(item, config.materials);
+    feed.tag = item.optional<int>("tag", 0, at_least(0));
+    feed.velocity = item.vector("velocity", the_case.domain.dimensions, Vec3::Zero());
+    item.done();
+    config.feeds.push_back(feed);
+  }
   section.done();
   return spec;
 }

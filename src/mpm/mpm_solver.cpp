@@ -8,6 +8,8 @@
 
 #include "core/error.hpp"
 #include "materials/granular/granular_stress.hpp"
+#include "mpm/point_exits.hpp"
+#include "mpm/point_feeds.hpp"
 #include "mpm/point_fill.hpp"
 #include "particles/store_state.hpp"
 
@@ -44,8 +46,10 @@ MpmSolver::MpmSolver(ParticleStore& store, const Domain& domain, const MpmConfig
       fields_(store),
       grid_(make_grid(domain, config)),
       shape_(make_shape(config)),
-      boundaries_(grid_, config.walls) {
+      boundaries_(grid_, config.walls),
+      feeds_(config_.feeds, config_.materials, domain, limits) {
   fill_points(config_, domain_, gravity_, limits, store_, fields_);
+  next_id_ = static_cast<std::int64_t>(store_.size());
   transfer_ = {config_.apic, config_.flip_fraction, shape_->apic_inertia()};
   double mean_mass = 0.0;
   for (const double m : store_.mass())
@@ -102,6 +106,8 @@ void MpmSolver::step(double dt) {
   velocity_gradients(grid_, stencils_, nodes_.velocity_new, gradient_);
   update_stresses(dt);
   move_points(dt);
+  mass_out_ += remove_exited(config_.exits, store_, exit_order_);
+  mass_in_ += feeds_.refill(store_, fields_, next_id_);
   time_ += dt;
   ++steps_;
 }
@@ -160,12 +166,13 @@ std::map<std::string, double> MpmSolver::derived_parameters() const {
 
 void MpmSolver::save(StateArchive& archive, const std::string& prefix) const {
   save_store(store_, archive, prefix);
-  archive.put_doubles(prefix + "times", std::vector<double>{time_, max_speed_});
-  archive.put_integers(prefix + "steps", std::vector<std::int64_t>{steps_});
+  archive.put_doubles(prefix + "times",
+                      std::vector<double>{time_, max_speed_, mass_out_, mass_in_});
+  archive.put_integers(prefix + "steps", std::vector<std::int64_t>{steps_, next_id_});
 }
 
 void MpmSolver::restore(const StateArchive& archive, const std::string& prefix) {
-  restore_store(store_, archive, prefix);
+  restore_store(store_, archive, prefix, !config_.exits.empty() || !config_.feeds.empty());
   const auto materials_count = static_cast<std::int32_t>(config_.materials.size());
   for (const std::int32_t m : fields_.material.values) {
     if (m < 0 || m >= materials_count)
@@ -174,11 +181,14 @@ void MpmSolver::restore(const StateArchive& archive, const std::string& prefix) 
   }
   const auto times = archive.doubles(prefix + "times");
   const auto steps = archive.integers(prefix + "steps");
-  if (times.size() != 2 || steps.size() != 1)
+  if (times.size() != 4 || steps.size() != 2)
     throw StateError(prefix + ": the times or steps entries have the wrong size");
   time_ = times[0];
   max_speed_ = times[1];
+  mass_out_ = times[2];
+  mass_in_ = times[3];
   steps_ = steps[0];
+  next_id_ = steps[1];
 }
 
 }  // namespace partimix::mpm

@@ -13,6 +13,7 @@
 #include "mpm/config.hpp"
 #include "mpm/grid_boundaries.hpp"
 #include "mpm/grid_fields.hpp"
+#include "mpm/point_feeds.hpp"
 #include "mpm/point_fields.hpp"
 #include "mpm/transfers.hpp"
 #include "particles/solver.hpp"
@@ -36,6 +37,10 @@ class MpmSolver final : public Solver {
   void restore(const StateArchive& archive, const std::string& prefix) override;
 
   double time() const { return time_; }
+  // The mass that has left through the exits [kg; kg/m in 2D].
+  double mass_out() const { return mass_out_; }
+  // The mass the feeds have added [kg; kg/m in 2D].
+  double mass_in() const { return mass_in_; }
 
  private:
   void prepare_points();
@@ -51,6 +56,7 @@ class MpmSolver final : public Solver {
   grid::CartesianGrid grid_;
   std::unique_ptr<grid::ShapeFunction> shape_;
   GridBoundaries boundaries_;
+  PointFeeds feeds_;
   TransferOptions transfer_;
   double min_node_mass_ = 0.0;
   double wave_speed_ = 0.0;
@@ -62,8 +68,12 @@ class MpmSolver final : public Solver {
   std::vector<Mat3> stress_volume_;
   std::vector<Mat3> gradient_;
   std::vector<Vec3> grid_velocity_;
+  std::vector<std::uint32_t> exit_order_;
   double time_ = 0.0;
   double max_speed_ = 0.0;
+  double mass_out_ = 0.0;
+  double mass_in_ = 0.0;
+  std::int64_t next_id_ = 0;
   std::int64_t steps_ = 0;
 };
 

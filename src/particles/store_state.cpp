@@ -47,14 +47,14 @@ bool same_values(std::vector<T> a, std::vector<T> b) {
 
 template <class T>
 void restore_integers(std::deque<Field<T>>& fields, const StateArchive& archive,
-                      const std::string& prefix, std::size_t count) {
+                      const std::string& prefix, std::size_t count, bool check_fixed) {
   for (auto& field : fields) {
     const std::string path = field_path(prefix, field.name);
     const auto values = sized(archive.integers(path), count, path);
     std::vector<T> restored(count);
     std::transform(values.begin(), values.end(), restored.begin(),
                    [](std::int64_t v) { return static_cast<T>(v); });
-    if (fixed_at_build(field.name) && !same_values(restored, field.values)) {
+    if (check_fixed && fixed_at_build(field.name) && !same_values(restored, field.values)) {
       throw StateError(
           fmt::format("{} holds other values than the case builds (the particles' "
                       "{} can only be reordered by a run)",
@@ -117,8 +117,15 @@ void save_store(const ParticleStore& store, StateArchive& archive, const std::st
   save_integers(store.id_fields(), archive, prefix);
 }
 
-void restore_store(ParticleStore& store, const StateArchive& archive, const std::string& prefix) {
+void restore_store(ParticleStore& store, const StateArchive& archive, const std::string& prefix,
+                   bool count_may_change) {
   const auto saved = archive.integers(prefix + "particles");
+  // The count is taken only when a saved field has that many values (the file's size bounds
+  // them), so a crafted count cannot make the store allocate.
+  if (count_may_change && saved.size() == 1 &&
+      saved[0] == static_cast<std::int64_t>(archive.doubles(field_path(prefix, "mass")).size())) {
+    store.resize(static_cast<std::size_t>(saved[0]));
+  }
   if (saved.size() != 1 || saved[0] != static_cast<std::int64_t>(store.size())) {
     throw StateError(fmt::format("the checkpoint holds {} particles under {}, the case builds {}",
                                  saved.empty() ? 0 : saved[0], prefix, store.size()));
@@ -134,8 +141,8 @@ void restore_store(ParticleStore& store, const StateArchive& archive, const std:
     const std::string path = field_path(prefix, field.name);
     field.values = sized(archive.vectors(path), count, path);
   }
-  restore_integers(store.integer_fields(), archive, prefix, count);
-  restore_integers(store.id_fields(), archive, prefix, count);
+  restore_integers(store.integer_fields(), archive, prefix, count, !count_may_change);
+  restore_integers(store.id_fields(), archive, prefix, count, !count_may_change);
 }
 
 }  // namespace partimix
