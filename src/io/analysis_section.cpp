@@ -262,7 +262,9 @@ void read_schedule(Reader& item, AnalysisSpec& analysis, const Case& the_case) {
                      "`name`: its rows go to series_<name>.csv");
   }
   analysis.sample_from = item.optional<double>("sample_from", 0.0, kNonNegative);
-  analysis.sample_until = item.optional<double>("sample_until", the_case.time.end, kPositive);
+  // `auto` (the default): to the end of the run, whatever time.end a resumed run is given.
+  if (const std::optional<double> until = item.automatic<double>("sample_until", kPositive))
+    analysis.sample_until = *until;
   if (!(analysis.sample_until > analysis.sample_from))
     throw item.error("sample_until", "must be later than sample_from");
   const double span = std::min(analysis.sample_until, the_case.time.end) - analysis.sample_from;

@@ -65,36 +65,62 @@ void advance_nodes(const grid::NodeBuckets& buckets, double dt, double min_mass,
   }
 }
 
-void grid_to_points(const grid::CartesianGrid& grid, std::span<const grid::PointStencil> stencils,
-                    const GridFields& nodes, const TransferOptions& options,
-                    std::span<Vec3> velocity, std::span<Mat3> affine,
-                    std::span<Vec3> grid_velocity) {
+// One point's grid velocity and, with APIC, its affine velocity: the constant-inertia form
+// (quadratic B-splines) or the gradient form; with FLIP the change of the nodal velocities.
+template <bool kApic, bool kConstantInertia>
+void gather_point(const grid::CartesianGrid& grid, const grid::PointStencil& stencil,
+                  const GridFields& nodes, double inverse_inertia, Vec3& v_grid, Vec3& change,
+                  Mat3& affine) {
+  grid::for_each_node(grid, stencil, [&](std::size_t n, const NodeWeight& w) {
+    const Vec3& v = nodes.velocity_new[n];
+    v_grid += w.weight * v;
+    if constexpr (!kApic)
+      change += w.weight * (v - nodes.velocity[n]);
+    else if constexpr (kConstantInertia)
+      affine.noalias() += (w.weight * inverse_inertia) * v * w.offset.transpose();
+    else
+      affine.noalias() += v * w.gradient.transpose();
+  });
+}
+
+template <bool kApic, bool kConstantInertia>
+void grid_to_points_with(const grid::CartesianGrid& grid,
+                         std::span<const grid::PointStencil> stencils, const GridFields& nodes,
+                         const TransferOptions& options, std::span<Vec3> velocity,
+                         std::span<Mat3> affine, std::span<Vec3> grid_velocity) {
   const double h = grid.cell_size();
-  const double inverse_inertia =
-      options.apic_inertia > 0.0 ? 1.0 / (options.apic_inertia * h * h) : 0.0;
+  const double inverse_inertia = kConstantInertia ? 1.0 / (options.apic_inertia * h * h) : 0.0;
+  const double alpha = options.flip_fraction;
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t p = 0; p < signed_size(stencils.size()); ++p) {
     Vec3 v_grid = Vec3::Zero();
     Vec3 change = Vec3::Zero();
     Mat3 c = Mat3::Zero();
-    grid::for_each_node(grid, stencils[p], [&](std::size_t n, const NodeWeight& w) {
-      const Vec3& v = nodes.velocity_new[n];
-      v_grid += w.weight * v;
-      change += w.weight * (v - nodes.velocity[n]);
-      if (inverse_inertia > 0.0)
-        c += (w.weight * inverse_inertia) * v * w.offset.transpose();
-      else
-        c += v * w.gradient.transpose();
-    });
+    gather_point<kApic, kConstantInertia>(grid, stencils[p], nodes, inverse_inertia, v_grid, change,
+                                          c);
     grid_velocity[p] = v_grid;
-    if (options.apic) {
+    if constexpr (kApic) {
       velocity[p] = v_grid;
       affine[p] = c;
     } else {
-      const double alpha = options.flip_fraction;
       velocity[p] = alpha * (velocity[p] + change) + (1.0 - alpha) * v_grid;
     }
   }
+}
+
+void grid_to_points(const grid::CartesianGrid& grid, std::span<const grid::PointStencil> stencils,
+                    const GridFields& nodes, const TransferOptions& options,
+                    std::span<Vec3> velocity, std::span<Mat3> affine,
+                    std::span<Vec3> grid_velocity) {
+  if (!options.apic)
+    grid_to_points_with<false, false>(grid, stencils, nodes, options, velocity, affine,
+                                      grid_velocity);
+  else if (options.apic_inertia > 0.0)
+    grid_to_points_with<true, true>(grid, stencils, nodes, options, velocity, affine,
+                                    grid_velocity);
+  else
+    grid_to_points_with<true, false>(grid, stencils, nodes, options, velocity, affine,
+                                     grid_velocity);
 }
 
 void velocity_gradients(const grid::CartesianGrid& grid,

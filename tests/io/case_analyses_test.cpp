@@ -5,6 +5,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <string>
 
 #include "case_files.hpp"
@@ -349,7 +351,19 @@ TEST(CaseAnalyses, AnOwnScheduleNeedsANameAndStaysWithinTheLimit) {
       "  - {type: front_position, axis: x, name: f, sample_interval: 0.01, sample_from: 0.2}\n"));
   EXPECT_EQ(loaded.analyses[0].sample_interval, 0.01);
   EXPECT_EQ(loaded.analyses[0].sample_from, 0.2);
-  EXPECT_EQ(loaded.analyses[0].sample_until, loaded.time.end);
+  EXPECT_TRUE(std::isinf(loaded.analyses[0].sample_until));
+}
+
+// sample_until defaults to the end of the run, written `auto` in the resolved case: a run
+// resumed with a later time.end resolves the analysis the same way, so the checkpoint fits (the
+// default was time.end itself, which made the resumed case differ at sample_until).
+TEST(CaseAnalyses, TheDefaultSampleUntilFollowsTheEndOfTheRun) {
+  const std::string text =
+      with_analyses_3d("  - {type: front_position, axis: x, name: f, sample_interval: 0.01}\n");
+  const io::Case shorter = load_text(text);
+  const io::Case longer = load_text(text, {"time.end=" + std::to_string(2.0 * shorter.time.end)});
+  EXPECT_EQ(shorter.resolved.at("analyses"), longer.resolved.at("analyses"));
+  EXPECT_EQ(shorter.resolved.at("analyses")[0].at("sample_until"), "auto");
 }
 
 TEST(CaseAnalyses, TwoAnalysesOfOneNameAreRefused) {
