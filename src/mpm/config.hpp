@@ -42,10 +42,10 @@ struct PointExit {
   Vec3 normal = -Vec3::UnitY();  // unit, the way the material leaves
 };
 
-// A feed (docs/mpm.md, "Exits and feeds"): the region is kept full. Every step, while the
-// region holds less than its full mass (rho_c times its lattice cells) by half a point or more,
-// the empty lattice cells (of `spacing`) get a point each, in the lattice's order, at the
-// cell's centre, stress-free at the critical density, moving with `velocity`.
+// A feed (docs/mpm.md, "Exits and feeds"): the region is kept full from the top. Its lattice
+// (of `spacing`) is cut into columns along gravity; every step, each column gets points on its
+// lattice from its top down to a spacing above its highest point, stress-free at the critical
+// density, moving with `velocity`.
 struct PointFeed {
   std::shared_ptr<const geometry::Shape> region;
   double spacing = 0.0;

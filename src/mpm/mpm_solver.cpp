@@ -47,7 +47,7 @@ MpmSolver::MpmSolver(ParticleStore& store, const Domain& domain, const MpmConfig
       grid_(make_grid(domain, config)),
       shape_(make_shape(config)),
       boundaries_(grid_, config.walls),
-      feeds_(config_.feeds, config_.materials, domain, limits) {
+      feeds_(config_.feeds, config_.materials, domain, gravity, limits) {
   fill_points(config_, domain_, gravity_, limits, store_, fields_);
   next_id_ = static_cast<std::int64_t>(store_.size());
   transfer_ = {config_.apic, config_.flip_fraction, shape_->apic_inertia()};
