@@ -24,7 +24,7 @@ using test_support::mpm_config;
 using test_support::plane_wall;
 using test_support::seed_beads;
 
-constexpr double kWidth = 0.1;  // L_i
+constexpr double kWidth = 0.06;  // L_i
 constexpr double kCell = 0.01;
 
 struct Deposit {
