@@ -58,8 +58,8 @@ struct MpmConfig {
   double cell_size = 0.0;                  // h [m]
   std::string shape_function = "bspline";  // linear | gimp | bspline
   bool apic = true;                        // transfer: apic, else flip
-  double flip_fraction = 0.99;             // alpha of the FLIP/PIC blend
-  bool musl = true;                        // update: musl, else usl
+  std::optional<double> filter_time;  // tau [s] of the transfers' filter; auto: 0.1 sqrt(h / |g|)
+  bool musl = true;                   // update: musl, else usl
   double cfl = 0.3;
   double max_grid_nodes = 5.0e7;  // limits.grid_nodes
   std::vector<materials::GranularMaterial> materials;

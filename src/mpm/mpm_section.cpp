@@ -105,10 +105,7 @@ void read_numerics(Reader& section, MpmConfig& config) {
   config.shape_function =
       section.choice("shape_function", config.shape_function, {"bspline", "gimp", "linear"});
   config.apic = section.choice("transfer", "apic", {"apic", "flip"}) == "apic";
-  config.flip_fraction =
-      section.optional<double>("flip_fraction", config.flip_fraction, kNonNegative);
-  if (config.flip_fraction > 1.0)
-    throw section.error("flip_fraction", "must lie in [0, 1]");
+  config.filter_time = section.automatic<double>("filter_time", kNonNegative);
   config.musl = section.choice("update", "musl", {"musl", "usl"}) == "musl";
   config.cfl = section.optional<double>("cfl", config.cfl, kPositive);
   if (config.cfl > 1.0)

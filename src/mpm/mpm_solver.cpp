@@ -35,6 +35,12 @@ grid::CartesianGrid make_grid(const Domain& domain, const MpmConfig& config) {
   }
 }
 
+// tau = 0.1 sqrt(h / |g|) (docs/mpm.md, "Transfers"); without gravity 0, the filter every step.
+double automatic_filter_time(double cell_size, const Vec3& gravity) {
+  const double g = gravity.norm();
+  return g > 0.0 ? 0.1 * std::sqrt(cell_size / g) : 0.0;
+}
+
 }  // namespace
 
 MpmSolver::MpmSolver(ParticleStore& store, const Domain& domain, const MpmConfig& config,
@@ -50,7 +56,8 @@ MpmSolver::MpmSolver(ParticleStore& store, const Domain& domain, const MpmConfig
       feeds_(config_.feeds, config_.materials, domain, gravity, limits) {
   fill_points(config_, domain_, gravity_, limits, store_, fields_);
   next_id_ = static_cast<std::int64_t>(store_.size());
-  transfer_ = {config_.apic, config_.flip_fraction, shape_->apic_inertia()};
+  transfer_ = {config_.apic, 0.0, shape_->apic_inertia()};
+  filter_time_ = config_.filter_time.value_or(automatic_filter_time(config_.cell_size, gravity_));
   double mean_mass = 0.0;
   for (const double m : store_.mass())
     mean_mass += m;
@@ -98,6 +105,7 @@ void MpmSolver::step(double dt) {
   points_to_grid(grid_, buckets_, view(), gravity_, min_node_mass_, nodes_);
   advance_nodes(buckets_, dt, min_node_mass_, nodes_);
   boundaries_.apply(time_ + dt, buckets_.active_nodes(), nodes_.velocity_new);
+  transfer_.kept = filter_time_ > 0.0 ? std::exp(-dt / filter_time_) : 0.0;
   grid_to_points(grid_, stencils_, nodes_, transfer_, store_.velocity(), affine_, grid_velocity_);
   if (config_.musl) {
     momentum_to_grid(grid_, buckets_, view(), min_node_mass_, nodes_);
@@ -154,6 +162,7 @@ std::map<std::string, double> MpmSolver::derived_parameters() const {
       {"grid nodes [-]", static_cast<double>(grid_.node_count())},
       {"elastic wave speed [m/s]", wave_speed_},
       {"time step at rest [s]", config_.cfl * config_.cell_size / wave_speed_},
+      {"transfer filter time [s]", filter_time_},
       {"material points [-]", static_cast<double>(store_.size())}};
   for (const materials::GranularMaterial& material : config_.materials) {
     const std::string prefix = config_.materials.size() > 1 ? material.name + " " : "";

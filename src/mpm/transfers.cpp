@@ -65,8 +65,9 @@ void advance_nodes(const grid::NodeBuckets& buckets, double dt, double min_mass,
   }
 }
 
-// One point's grid velocity and, with APIC, its affine velocity: the constant-inertia form
-// (quadratic B-splines) or the gradient form; with FLIP the change of the nodal velocities.
+// One point's grid velocity, the change of the nodal velocities at the point (FLIP's increment)
+// and, with APIC, its affine velocity: the constant-inertia form (quadratic B-splines) or the
+// gradient form.
 template <bool kApic, bool kConstantInertia>
 void gather_point(const grid::CartesianGrid& grid, const grid::PointStencil& stencil,
                   const GridFields& nodes, double inverse_inertia, Vec3& v_grid, Vec3& change,
@@ -74,11 +75,10 @@ void gather_point(const grid::CartesianGrid& grid, const grid::PointStencil& ste
   grid::for_each_node(grid, stencil, [&](std::size_t n, const NodeWeight& w) {
     const Vec3& v = nodes.velocity_new[n];
     v_grid += w.weight * v;
-    if constexpr (!kApic)
-      change += w.weight * (v - nodes.velocity[n]);
-    else if constexpr (kConstantInertia)
+    change += w.weight * (v - nodes.velocity[n]);
+    if constexpr (kApic && kConstantInertia)
       affine.noalias() += (w.weight * inverse_inertia) * v * w.offset.transpose();
-    else
+    else if constexpr (kApic)
       affine.noalias() += v * w.gradient.transpose();
   });
 }
@@ -90,7 +90,7 @@ void grid_to_points_with(const grid::CartesianGrid& grid,
                          std::span<Mat3> affine, std::span<Vec3> grid_velocity) {
   const double h = grid.cell_size();
   const double inverse_inertia = kConstantInertia ? 1.0 / (options.apic_inertia * h * h) : 0.0;
-  const double alpha = options.flip_fraction;
+  const double kept = options.kept;
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t p = 0; p < signed_size(stencils.size()); ++p) {
     Vec3 v_grid = Vec3::Zero();
@@ -99,12 +99,9 @@ void grid_to_points_with(const grid::CartesianGrid& grid,
     gather_point<kApic, kConstantInertia>(grid, stencils[p], nodes, inverse_inertia, v_grid, change,
                                           c);
     grid_velocity[p] = v_grid;
-    if constexpr (kApic) {
-      velocity[p] = v_grid;
+    velocity[p] = kept * (velocity[p] + change) + (1.0 - kept) * v_grid;
+    if constexpr (kApic)
       affine[p] = c;
-    } else {
-      velocity[p] = alpha * (velocity[p] + change) + (1.0 - alpha) * v_grid;
-    }
   }
 }
 

@@ -36,11 +36,13 @@ void momentum_to_grid(const grid::CartesianGrid& grid, const grid::NodeBuckets& 
 // v_new = v + dt f / m on every active node with mass.
 void advance_nodes(const grid::NodeBuckets& buckets, double dt, double min_mass, GridFields& nodes);
 
-// What grid-to-point gives a point: its velocity on the grid (positions move with it) and
-// APIC's affine velocity or FLIP's blended velocity.
+// What grid-to-point gives a point: its velocity on the grid (positions move with it), the
+// velocity v_p = kept (v_p + sum_i w_ip (v_i^new - v_i)) + (1 - kept) sum_i w_ip v_i^new
+// (docs/mpm.md, "Transfers": kept = exp(-dt / tau), the filter as a rate) and, with APIC, the
+// affine velocity.
 struct TransferOptions {
   bool apic = true;
-  double flip_fraction = 0.99;
+  double kept = 0.0;          // the fraction of FLIP's velocity kept this step, in [0, 1]
   double apic_inertia = 0.0;  // D_p / h^2 when constant, else 0: the gradient form
 };
 

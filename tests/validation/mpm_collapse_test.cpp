@@ -3,13 +3,19 @@
 // slip wall (the symmetry plane), on a rough floor, released at t = 0. Reported: the runout
 // L_f (the largest x reached by the material, taken as the x below which 99.5% of the mass lies,
 // so that a single stray point does not set it) and the final height H_f.
-// The reduced stiffness does not matter: doubling E changes the runout by less than 2%
-// (docs/mpm.md, "Reduced stiffness"). The runout against the aspect ratio and the published
-// scaling laws is not asserted yet: at this test's grid (1 cm) the runout is not converged
-// (docs/validation.md, "MPM column collapse", with the numbers).
+// Neither the reduced stiffness nor the time step matters: doubling E (each run at its own
+// stable step) changes the runout by less than 2% (docs/mpm.md, "Reduced stiffness"), and a
+// third of the step by less than 2% (docs/mpm.md, "Transfers": the filter is a rate, so the
+// numerical dissipation does not grow with the number of steps). 2% is about what the runout
+// resolves here: a point spacing (2.5 mm) is 1.9% of L_f - L_i.
+// Against the aspect ratio: short columns keep their top (asserted). The runout of tall columns
+// against the published a^(2/3) law is a documented study (docs/validation.md, "MPM column
+// collapse"), not asserted here: with 6 to 10 cells across the column the exponent between
+// a = 3 and 6 is 0.95 to 0.75 (not converged), and finer grids cost minutes per column.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <utility>
 
@@ -40,7 +46,8 @@ Deposit collapse(double aspect_ratio, double youngs_modulus, double end, double 
                   plane_wall(Vec3::Zero(), Vec3::UnitX(), GridBoundary::slip)};
   ParticleStore store;
   MpmSolver solver(store,
-                   domain_2d(Vec3::Zero(), Vec3(8 * kWidth, (aspect_ratio + 0.3) * kWidth, 0)),
+                   domain_2d(Vec3::Zero(), Vec3((3.0 + 1.5 * aspect_ratio) * kWidth,
+                                                (aspect_ratio + 0.3) * kWidth, 0)),
                    config, Vec3(0, -9.81, 0), {});
   if (dt > 0.0) {
     while (solver.time() < end)
@@ -61,19 +68,46 @@ Deposit collapse(double aspect_ratio, double youngs_modulus, double end, double 
   return deposit;
 }
 
-// Both at the stable step of the stiffer material: the time step itself changes the runout at
-// this resolution (docs/validation.md, "MPM column collapse": 7% from cfl 0.3 to 0.2), and the
-// test isolates the stiffness.
+// The change of the runout L_f - L_i between two deposits, relative to the first.
+double runout_change(const Deposit& first, const Deposit& second) {
+  return std::abs(second.runout - first.runout) / (first.runout - kWidth);
+}
+
 TEST(MpmCollapse, DoublingTheReducedStiffnessChangesTheRunoutByLessThanTwoPercent) {
-  const double dt = 0.3 * kCell / seed_beads(2.0e7).wave_speed();
-  const Deposit soft = collapse(1.8, 1.0e7, 0.6, dt);
-  const Deposit stiff = collapse(1.8, 2.0e7, 0.6, dt);
-  const double change = std::abs(stiff.runout - soft.runout) / (soft.runout - kWidth);
-  EXPECT_LT(change, 0.02);
+  const Deposit soft = collapse(1.8, 1.0e7, 0.6);
+  const Deposit stiff = collapse(1.8, 2.0e7, 0.6);
+  EXPECT_LT(runout_change(soft, stiff), 0.02);
   RecordProperty("runout_soft", std::to_string(soft.runout));
   RecordProperty("runout_stiff", std::to_string(stiff.runout));
   RecordProperty("height_soft", std::to_string(soft.height));
   RecordProperty("height_stiff", std::to_string(stiff.height));
+}
+
+// With APIC filtered every step the runout fell by 7% from cfl 0.3 to 0.2, and on without end
+// ((L_f - L_i) / L_i = 2.11, 1.98, 1.73, 1.51 at cfl 0.3, 0.2, 0.1, 0.05, 10 cm column).
+// Measured now: 1.1% (this column), 0.1% (the 10 cm column, cfl 0.3 against 0.1).
+TEST(MpmCollapse, AThirdOfTheTimeStepChangesTheRunoutByLessThanTwoPercent) {
+  const double stable = 0.3 * kCell / seed_beads(1.0e7).wave_speed();
+  const Deposit coarse = collapse(1.8, 1.0e7, 0.6, stable);
+  const Deposit fine = collapse(1.8, 1.0e7, 0.6, stable / 3.0);
+  EXPECT_LT(runout_change(coarse, fine), 0.02);
+  RecordProperty("runout_cfl_03", std::to_string(coarse.runout));
+  RecordProperty("runout_cfl_01", std::to_string(fine.runout));
+}
+
+// The normalised runout (L_f - L_i) / L_i.
+double normalised_runout(const Deposit& deposit) {
+  return (deposit.runout - kWidth) / kWidth;
+}
+
+// Short columns keep their top: only a wedge at the foot slides (H_f = H_i below a of about
+// 0.7-1; Lube et al. 2005, Lajeunesse et al. 2005; docs/validation.md, "MPM column collapse").
+TEST(MpmCollapse, AShortColumnKeepsItsTop) {
+  const double a = 0.5;
+  const Deposit deposit = collapse(a, 1.0e7, 0.5);
+  EXPECT_NEAR(deposit.height / (a * kWidth), 1.0, 0.02);
+  RecordProperty("height_over_initial", std::to_string(deposit.height / (a * kWidth)));
+  RecordProperty("runout", std::to_string(normalised_runout(deposit)));
 }
 
 }  // namespace

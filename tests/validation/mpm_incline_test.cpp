@@ -5,8 +5,8 @@
 // 167, eq. 3.3): the friction tau / p = tan theta everywhere, so I = I_theta =
 // I0 (tan theta - mu_s) / (mu_2 - tan theta), and with p = rho_c g cos(theta) (h - y),
 //   u(y) = (2/3) (I_theta / d) sqrt(phi g cos theta) (h^(3/2) - (h - y)^(3/2)),
-// phi = rho_c / rho_s. The error falls with the grid (first order: the rough bed sits on a
-// node line, and its effective place is uncertain by a fraction of a cell).
+// phi = rho_c / rho_s. The error falls with the grid. (With the transfers filtered every step,
+// APIC's dissipation slowed the flow by 18% at 8 cells; docs/mpm.md, "Transfers".)
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -62,15 +62,17 @@ ProfileError incline_error(double cell) {
           std::sqrt(sum / static_cast<double>(store.size())) / exact(depth)};
 }
 
-// 8 cells over the depth, then 16: the error at least halves, and at 16 cells the top row's
-// speed is within 10% and the profile's RMS error within 10% of the surface speed. (32 cells:
-// -3.4% and 3.3%; docs/validation.md.)
+// 8 cells over the depth, then 16: the profile's RMS error falls by at least 40% and the top
+// row's error falls; at 16 cells the top row's speed is within 5% and the RMS error within 5%
+// of the surface speed. Measured (docs/validation.md): top -6.3%, -3.6%, -2.9% and RMS 6.8%,
+// 2.9%, 1.9% at 8, 16, 32 cells.
 TEST(MpmIncline, SteadyFlowConvergesToTheBagnoldProfile) {
   const ProfileError coarse = incline_error(0.005);
   const ProfileError fine = incline_error(0.0025);
-  EXPECT_LT(std::abs(fine.top), 0.5 * std::abs(coarse.top));
-  EXPECT_LT(std::abs(fine.top), 0.1);
-  EXPECT_LT(fine.rms, 0.1);
+  EXPECT_LT(fine.rms, 0.6 * coarse.rms);
+  EXPECT_LT(std::abs(fine.top), std::abs(coarse.top));
+  EXPECT_LT(std::abs(fine.top), 0.05);
+  EXPECT_LT(fine.rms, 0.05);
   RecordProperty("top_error_8_cells", std::to_string(coarse.top));
   RecordProperty("top_error_16_cells", std::to_string(fine.top));
   RecordProperty("rms_8_cells", std::to_string(coarse.rms));
