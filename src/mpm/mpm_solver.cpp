@@ -56,8 +56,9 @@ MpmSolver::MpmSolver(ParticleStore& store, const Domain& domain, const MpmConfig
       feeds_(config_.feeds, config_.materials, domain, gravity, limits) {
   fill_points(config_, domain_, gravity_, limits, store_, fields_);
   next_id_ = static_cast<std::int64_t>(store_.size());
-  transfer_ = {config_.apic, 0.0, shape_->apic_inertia()};
-  filter_time_ = config_.filter_time.value_or(automatic_filter_time(config_.cell_size, gravity_));
+  transfer_ = {config_.apic,
+               config_.filter_time.value_or(automatic_filter_time(config_.cell_size, gravity_)),
+               shape_->apic_inertia()};
   double mean_mass = 0.0;
   for (const double m : store_.mass())
     mean_mass += m;
@@ -105,8 +106,8 @@ void MpmSolver::step(double dt) {
   points_to_grid(grid_, buckets_, view(), gravity_, min_node_mass_, nodes_);
   advance_nodes(buckets_, dt, min_node_mass_, nodes_);
   boundaries_.apply(time_ + dt, buckets_.active_nodes(), nodes_.velocity_new);
-  transfer_.kept = filter_time_ > 0.0 ? std::exp(-dt / filter_time_) : 0.0;
-  grid_to_points(grid_, stencils_, nodes_, transfer_, store_.velocity(), affine_, grid_velocity_);
+  grid_to_points(grid_, stencils_, nodes_, transfer_, dt, store_.velocity(), affine_,
+                 grid_velocity_);
   if (config_.musl) {
     momentum_to_grid(grid_, buckets_, view(), min_node_mass_, nodes_);
     boundaries_.apply(time_ + dt, buckets_.active_nodes(), nodes_.velocity_new);
@@ -162,7 +163,7 @@ std::map<std::string, double> MpmSolver::derived_parameters() const {
       {"grid nodes [-]", static_cast<double>(grid_.node_count())},
       {"elastic wave speed [m/s]", wave_speed_},
       {"time step at rest [s]", config_.cfl * config_.cell_size / wave_speed_},
-      {"transfer filter time [s]", filter_time_},
+      {"transfer filter time [s]", transfer_.filter_time},
       {"material points [-]", static_cast<double>(store_.size())}};
   for (const materials::GranularMaterial& material : config_.materials) {
     const std::string prefix = config_.materials.size() > 1 ? material.name + " " : "";

@@ -58,7 +58,6 @@ class MpmSolver final : public Solver {
   GridBoundaries boundaries_;
   PointFeeds feeds_;
   TransferOptions transfer_;
-  double filter_time_ = 0.0;  // tau [s]
   double min_node_mass_ = 0.0;
   double wave_speed_ = 0.0;
   // Per step, kept between steps (no allocation once sized).

@@ -1,5 +1,7 @@
 #include "mpm/transfers.hpp"
 
+#include <cmath>
+
 namespace partimix::mpm {
 namespace {
 
@@ -86,11 +88,10 @@ void gather_point(const grid::CartesianGrid& grid, const grid::PointStencil& ste
 template <bool kApic, bool kConstantInertia>
 void grid_to_points_with(const grid::CartesianGrid& grid,
                          std::span<const grid::PointStencil> stencils, const GridFields& nodes,
-                         const TransferOptions& options, std::span<Vec3> velocity,
+                         const TransferOptions& options, double kept, std::span<Vec3> velocity,
                          std::span<Mat3> affine, std::span<Vec3> grid_velocity) {
   const double h = grid.cell_size();
   const double inverse_inertia = kConstantInertia ? 1.0 / (options.apic_inertia * h * h) : 0.0;
-  const double kept = options.kept;
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t p = 0; p < signed_size(stencils.size()); ++p) {
     Vec3 v_grid = Vec3::Zero();
@@ -106,17 +107,18 @@ void grid_to_points_with(const grid::CartesianGrid& grid,
 }
 
 void grid_to_points(const grid::CartesianGrid& grid, std::span<const grid::PointStencil> stencils,
-                    const GridFields& nodes, const TransferOptions& options,
+                    const GridFields& nodes, const TransferOptions& options, double dt,
                     std::span<Vec3> velocity, std::span<Mat3> affine,
                     std::span<Vec3> grid_velocity) {
+  const double kept = options.filter_time > 0.0 ? std::exp(-dt / options.filter_time) : 0.0;
   if (!options.apic)
-    grid_to_points_with<false, false>(grid, stencils, nodes, options, velocity, affine,
+    grid_to_points_with<false, false>(grid, stencils, nodes, options, kept, velocity, affine,
                                       grid_velocity);
   else if (options.apic_inertia > 0.0)
-    grid_to_points_with<true, true>(grid, stencils, nodes, options, velocity, affine,
+    grid_to_points_with<true, true>(grid, stencils, nodes, options, kept, velocity, affine,
                                     grid_velocity);
   else
-    grid_to_points_with<true, false>(grid, stencils, nodes, options, velocity, affine,
+    grid_to_points_with<true, false>(grid, stencils, nodes, options, kept, velocity, affine,
                                      grid_velocity);
 }
 

@@ -37,19 +37,19 @@ void momentum_to_grid(const grid::CartesianGrid& grid, const grid::NodeBuckets& 
 void advance_nodes(const grid::NodeBuckets& buckets, double dt, double min_mass, GridFields& nodes);
 
 // What grid-to-point gives a point: its velocity on the grid (positions move with it), the
-// velocity v_p = kept (v_p + sum_i w_ip (v_i^new - v_i)) + (1 - kept) sum_i w_ip v_i^new
-// (docs/mpm.md, "Transfers": kept = exp(-dt / tau), the filter as a rate) and, with APIC, the
+// velocity v_p = k (v_p + sum_i w_ip (v_i^new - v_i)) + (1 - k) sum_i w_ip v_i^new with
+// k = exp(-dt / tau) (docs/mpm.md, "Transfers": the filter as a rate) and, with APIC, the
 // affine velocity.
 struct TransferOptions {
   bool apic = true;
-  double kept = 0.0;          // the fraction of FLIP's velocity kept this step, in [0, 1]
+  double filter_time = 0.0;   // tau [s]; 0: k = 0, the filter every step
   double apic_inertia = 0.0;  // D_p / h^2 when constant, else 0: the gradient form
 };
 
-// Sets velocity, affine and grid_velocity of every point from nodes.velocity_new (and, for FLIP,
-// nodes.velocity).
+// Sets velocity, affine and grid_velocity of every point from nodes.velocity_new and
+// nodes.velocity, for a step of dt.
 void grid_to_points(const grid::CartesianGrid& grid, std::span<const grid::PointStencil> stencils,
-                    const GridFields& nodes, const TransferOptions& options,
+                    const GridFields& nodes, const TransferOptions& options, double dt,
                     std::span<Vec3> velocity, std::span<Mat3> affine,
                     std::span<Vec3> grid_velocity);
 
