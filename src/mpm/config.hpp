@@ -58,8 +58,9 @@ struct MpmConfig {
   double cell_size = 0.0;                  // h [m]
   std::string shape_function = "bspline";  // linear | gimp | bspline
   bool apic = true;                        // transfer: apic, else flip
-  std::optional<double> filter_time;  // tau [s] of the transfers' filter; auto: 0.1 sqrt(h / |g|)
+  std::optional<double> filter_time;  // tau [s] of the transfers' filter; auto: 0.06 sqrt(h / |g|)
   bool musl = true;                   // update: musl, else usl
+  bool averaged_dilation = true;      // dilation: averaged (tr L through the nodes), else local
   double cfl = 0.3;
   double max_grid_nodes = 5.0e7;  // limits.grid_nodes
   std::vector<materials::GranularMaterial> materials;

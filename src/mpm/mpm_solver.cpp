@@ -35,10 +35,10 @@ grid::CartesianGrid make_grid(const Domain& domain, const MpmConfig& config) {
   }
 }
 
-// tau = 0.1 sqrt(h / |g|) (docs/mpm.md, "Transfers"); without gravity 0, the filter every step.
+// tau = 0.06 sqrt(h / |g|) (docs/mpm.md, "Transfers"); without gravity 0, the filter every step.
 double automatic_filter_time(double cell_size, const Vec3& gravity) {
   const double g = gravity.norm();
-  return g > 0.0 ? 0.1 * std::sqrt(cell_size / g) : 0.0;
+  return g > 0.0 ? 0.06 * std::sqrt(cell_size / g) : 0.0;
 }
 
 }  // namespace
@@ -100,7 +100,8 @@ void MpmSolver::prepare_points() {
 }
 
 // One explicit step (docs/mpm.md): P2G, forces, walls, G2P, (MUSL re-map and walls), the
-// velocity gradients, the stresses, then the positions.
+// velocity gradients (with their dilation averaged through the nodes), the stresses, then the
+// positions.
 void MpmSolver::step(double dt) {
   prepare_points();
   points_to_grid(grid_, buckets_, view(), gravity_, min_node_mass_, nodes_);
@@ -113,6 +114,8 @@ void MpmSolver::step(double dt) {
     boundaries_.apply(time_ + dt, buckets_.active_nodes(), nodes_.velocity_new);
   }
   velocity_gradients(grid_, stencils_, nodes_.velocity_new, gradient_);
+  if (config_.averaged_dilation)
+    average_dilation(grid_, buckets_, stencils_, store_.mass(), min_node_mass_, nodes_, gradient_);
   update_stresses(dt);
   move_points(dt);
   mass_out_ += remove_exited(config_.exits, store_, exit_order_);

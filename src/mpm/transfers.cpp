@@ -135,4 +135,31 @@ void velocity_gradients(const grid::CartesianGrid& grid,
   }
 }
 
+void average_dilation(const grid::CartesianGrid& grid, const grid::NodeBuckets& buckets,
+                      std::span<const grid::PointStencil> stencils, std::span<const double> mass,
+                      double min_mass, GridFields& nodes, std::span<Mat3> gradient) {
+  const std::vector<std::size_t>& active = buckets.active_nodes();
+  const double h = grid.cell_size();
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t k = 0; k < signed_size(active.size()); ++k) {
+    const std::size_t n = active[k];
+    double sum = 0.0;
+    buckets.for_each_point(grid, n, [&](std::uint32_t p, int a, int b, int c) {
+      sum += grid::node_weight(stencils[p], a, b, c, h).weight * mass[p] * gradient[p].trace();
+    });
+    nodes.dilation[n] = nodes.mass[n] > min_mass ? sum / nodes.mass[n] : 0.0;
+  }
+  const int dims = grid.dimensions();
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t p = 0; p < signed_size(stencils.size()); ++p) {
+    double mean = 0.0;
+    grid::for_each_node(grid, stencils[p], [&](std::size_t n, const NodeWeight& w) {
+      mean += w.weight * nodes.dilation[n];
+    });
+    const double shift = (mean - gradient[p].trace()) / dims;
+    for (int d = 0; d < dims; ++d)
+      gradient[p](d, d) += shift;
+  }
+}
+
 }  // namespace partimix::mpm

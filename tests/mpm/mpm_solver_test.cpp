@@ -140,25 +140,6 @@ TEST(MpmSolver, RestoredCheckpointContinuesBitForBit) {
   }
 }
 
-// A small hopper: a bin with a slot at the bottom, an exit plane below it and a feed at the top.
-MpmConfig small_hopper() {
-  MpmConfig config = mpm_config(0.01, seed_beads());
-  config.fills = {box_fill(Vec3(0, 0, -1), Vec3(0.1, 0.1, 1), 0.005)};
-  PointFeed feed;
-  feed.region = std::make_shared<geometry::Box>(Vec3(0, 0.1, -1), Vec3(0.1, 0.12, 1));
-  feed.spacing = 0.005;
-  config.feeds = {feed};
-  config.exits = {PointExit{Vec3(0, -0.05, 0), -Vec3::UnitY()}};
-  auto floor = std::make_shared<geometry::Box>(Vec3(0.03, -0.05, -1), Vec3(0.2, 0.0, 1));
-  GridWall bottom;
-  bottom.surface = floor->make_surface(true, {});
-  config.walls = {bottom, plane_wall(Vec3::Zero(), Vec3::UnitX(), GridBoundary::slip),
-                  plane_wall(Vec3(0.1, 0, 0), -Vec3::UnitX(), GridBoundary::slip)};
-  return config;
-}
-
-const Domain kHopperDomain = domain_2d(Vec3(-0.02, -0.1, 0), Vec3(0.12, 0.15, 0));
-
 double total_mass(const ParticleStore& store) {
   double sum = 0.0;
   for (const double m : store.mass())
@@ -168,7 +149,7 @@ double total_mass(const ParticleStore& store) {
 
 TEST(MpmSolver, ExitsAndFeedsBalanceTheMass) {
   ParticleStore store;
-  MpmSolver solver(store, kHopperDomain, small_hopper(), kGravity, {});
+  MpmSolver solver(store, test_support::fed_bin_domain(), test_support::fed_bin(), kGravity, {});
   const double start = total_mass(store);
   test_support::run_mpm(solver, 0.3);
   EXPECT_GT(solver.mass_out(), 0.0);
@@ -187,14 +168,14 @@ TEST(MpmSolver, ExitsAndFeedsBalanceTheMass) {
 
 TEST(MpmSolver, ARestoreTakesTheSavedPointCount) {
   ParticleStore store;
-  MpmSolver solver(store, kHopperDomain, small_hopper(), kGravity, {});
+  MpmSolver solver(store, test_support::fed_bin_domain(), test_support::fed_bin(), kGravity, {});
   test_support::run_mpm(solver, 0.1);
   StateArchive archive;
   solver.save(archive, "methods/mpm/");
   test_support::run_mpm(solver, 0.15);
 
   ParticleStore copy;
-  MpmSolver resumed(copy, kHopperDomain, small_hopper(), kGravity, {});
+  MpmSolver resumed(copy, test_support::fed_bin_domain(), test_support::fed_bin(), kGravity, {});
   resumed.restore(archive, "methods/mpm/");
   test_support::run_mpm(resumed, 0.15);
   ASSERT_EQ(copy.size(), store.size());

@@ -58,6 +58,29 @@ inline mpm::MpmConfig mpm_config(double cell_size, const materials::GranularMate
   return config;
 }
 
+// A fed bin in plane strain: the half (x in [0, 0.1], a symmetry plane at x = 0) of a bin
+// 20 cm wide, filled 10 cm high with the seed's beads on a 5 mm lattice over a 1 cm grid, a slot
+// 6 cm wide (x < 0.03 by symmetry) in its rough floor, a feed keeping y in [0.1, 0.12] full, and
+// an exit plane 5 cm below the floor. Its domain: fed_bin_domain().
+inline mpm::MpmConfig fed_bin() {
+  mpm::MpmConfig config = mpm_config(0.01, seed_beads());
+  config.fills = {box_fill(Vec3(0, 0, -1), Vec3(0.1, 0.1, 1), 0.005)};
+  mpm::PointFeed feed;
+  feed.region = std::make_shared<geometry::Box>(Vec3(0, 0.1, -1), Vec3(0.1, 0.12, 1));
+  feed.spacing = 0.005;
+  config.feeds = {feed};
+  config.exits = {mpm::PointExit{Vec3(0, -0.05, 0), -Vec3::UnitY()}};
+  mpm::GridWall floor;
+  floor.surface = geometry::Box(Vec3(0.03, -0.05, -1), Vec3(0.2, 0.0, 1)).make_surface(true, {});
+  config.walls = {floor, plane_wall(Vec3::Zero(), Vec3::UnitX(), mpm::GridBoundary::slip),
+                  plane_wall(Vec3(0.1, 0, 0), -Vec3::UnitX(), mpm::GridBoundary::slip)};
+  return config;
+}
+
+inline Domain fed_bin_domain() {
+  return domain_2d(Vec3(-0.02, -0.1, 0), Vec3(0.12, 0.15, 0));
+}
+
 // Steps the solver at its stable step to `end`; returns the steps taken.
 inline int run_mpm(mpm::MpmSolver& solver, double end) {
   int steps = 0;
