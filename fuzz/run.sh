@@ -25,6 +25,11 @@ fi
 # is fatal (-fno-sanitize-recover) and comes with a stack. HDF5's own leaks are suppressed
 # (fuzz/lsan.supp).
 export OMP_NUM_THREADS=1
+# The targets' scratch files go to a folder of this run, removed at the end: a child that
+# crashes (fork mode goes on after it) cannot remove its own, and they piled up in /tmp.
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+export TMPDIR=$scratch
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$PWD/fuzz/lsan.supp:print_suppressions=0}
 

@@ -60,7 +60,7 @@ struct MpmConfig {
   bool apic = true;                        // transfer: apic, else flip
   std::optional<double> filter_time;  // tau [s] of the transfers' filter; auto: 0.06 sqrt(h / |g|)
   bool musl = true;                   // update: musl, else usl
-  bool averaged_dilation = true;      // dilation: averaged (tr L through the nodes), else local
+  bool averaged_dilation = false;     // dilation: averaged (tr L through the nodes), else local
   double cfl = 0.3;
   double max_grid_nodes = 5.0e7;  // limits.grid_nodes
   std::vector<materials::GranularMaterial> materials;

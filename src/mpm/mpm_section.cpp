@@ -108,7 +108,7 @@ void read_numerics(Reader& section, MpmConfig& config) {
   config.filter_time = section.automatic<double>("filter_time", kNonNegative);
   config.musl = section.choice("update", "musl", {"musl", "usl"}) == "musl";
   config.averaged_dilation =
-      section.choice("dilation", "averaged", {"averaged", "local"}) == "averaged";
+      section.choice("dilation", "local", {"local", "averaged"}) == "averaged";
   config.cfl = section.optional<double>("cfl", config.cfl, kPositive);
   if (config.cfl > 1.0)
     throw section.error("cfl", "must lie in (0, 1]");

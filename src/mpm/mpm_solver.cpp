@@ -100,8 +100,8 @@ void MpmSolver::prepare_points() {
 }
 
 // One explicit step (docs/mpm.md): P2G, forces, walls, G2P, (MUSL re-map and walls), the
-// velocity gradients (with their dilation averaged through the nodes), the stresses, then the
-// positions.
+// velocity gradients (their dilation averaged through the nodes with `dilation: averaged`), the
+// stresses, then the positions.
 void MpmSolver::step(double dt) {
   prepare_points();
   points_to_grid(grid_, buckets_, view(), gravity_, min_node_mass_, nodes_);

@@ -58,8 +58,8 @@ void velocity_gradients(const grid::CartesianGrid& grid,
                         std::span<const grid::PointStencil> stencils,
                         const std::vector<Vec3>& nodal, std::span<Mat3> gradient);
 
-// The averaged dilation (docs/mpm.md, "Averaged dilation"): the nodes' mass-weighted mean of
-// the points' tr L, theta_i = sum_p w_ip m_p tr L_p / m_i, interpolated back to each point,
+// The averaged dilation (docs/mpm.md, "Dilation: local or averaged"): the nodes' mass-weighted mean
+// of the points' tr L, theta_i = sum_p w_ip m_p tr L_p / m_i, interpolated back to each point,
 // theta_p = sum_i w_ip theta_i, replaces tr L_p: L_p += (theta_p - tr L_p) / dims on the
 // diagonal of the grid's axes. The deviatoric part of L_p is unchanged.
 void average_dilation(const grid::CartesianGrid& grid, const grid::NodeBuckets& buckets,

@@ -1,5 +1,5 @@
-// The averaged dilation of mpm/transfers.hpp (docs/mpm.md, "Averaged dilation"): it keeps a
-// uniform rate and the deviatoric part of every L_p exactly, keeps the mass-weighted sum of the
+// The averaged dilation of mpm/transfers.hpp (docs/mpm.md, "Dilation: local or averaged"): it keeps
+// a uniform rate and the deviatoric part of every L_p exactly, keeps the mass-weighted sum of the
 // points' dilation rates to round-off, and removes nine tenths of a point-to-point checkerboard in
 // tr L, the noise that loosened draining bins.
 #include <gtest/gtest.h>

@@ -36,18 +36,21 @@ constexpr double kCell = 0.01;
 struct Deposit {
   double runout = 0.0;  // L_f [m]
   double height = 0.0;  // H_f [m]
+  double width = 0.0;   // L_i [m]
 };
 
-// The deposit at `end`, stepped at dt (0: the solver's stable step).
-Deposit collapse(double aspect_ratio, double youngs_modulus, double end, double dt = 0.0) {
+// The deposit of a column `width` wide (L_i) at `end`, stepped at dt (0: the solver's stable
+// step).
+Deposit collapse(double aspect_ratio, double youngs_modulus, double end, double dt = 0.0,
+                 double width = kWidth) {
   MpmConfig config = mpm_config(kCell, seed_beads(youngs_modulus));
-  config.fills = {box_fill(Vec3(0, 0, -1), Vec3(kWidth, aspect_ratio * kWidth, 1), kCell / 2)};
+  config.fills = {box_fill(Vec3(0, 0, -1), Vec3(width, aspect_ratio * width, 1), kCell / 2)};
   config.walls = {plane_wall(Vec3::Zero(), Vec3::UnitY(), GridBoundary::no_slip),
                   plane_wall(Vec3::Zero(), Vec3::UnitX(), GridBoundary::slip)};
   ParticleStore store;
   MpmSolver solver(store,
-                   domain_2d(Vec3::Zero(), Vec3((3.0 + 1.5 * aspect_ratio) * kWidth,
-                                                (aspect_ratio + 0.3) * kWidth, 0)),
+                   domain_2d(Vec3::Zero(), Vec3((3.0 + 1.5 * aspect_ratio) * width,
+                                                (aspect_ratio + 0.3) * width, 0)),
                    config, Vec3(0, -9.81, 0), {});
   if (dt > 0.0) {
     while (solver.time() < end)
@@ -57,6 +60,7 @@ Deposit collapse(double aspect_ratio, double youngs_modulus, double end, double 
   }
   std::vector<double> x;
   Deposit deposit;
+  deposit.width = width;
   for (const Vec3& position : store.position()) {
     x.push_back(position.x());
     deposit.height = std::max(deposit.height, position.y());
@@ -70,7 +74,7 @@ Deposit collapse(double aspect_ratio, double youngs_modulus, double end, double 
 
 // The change of the runout L_f - L_i between two deposits, relative to the first.
 double runout_change(const Deposit& first, const Deposit& second) {
-  return std::abs(second.runout - first.runout) / (first.runout - kWidth);
+  return std::abs(second.runout - first.runout) / (first.runout - first.width);
 }
 
 TEST(MpmCollapse, DoublingTheReducedStiffnessChangesTheRunoutByLessThanTwoPercent) {
@@ -85,7 +89,8 @@ TEST(MpmCollapse, DoublingTheReducedStiffnessChangesTheRunoutByLessThanTwoPercen
 
 // With APIC filtered every step the runout fell by 7% from cfl 0.3 to 0.2, and on without end
 // ((L_f - L_i) / L_i = 2.11, 1.98, 1.73, 1.51 at cfl 0.3, 0.2, 0.1, 0.05, 10 cm column).
-// Measured now: 1.1% (this column), 0.1% (the 10 cm column, cfl 0.3 against 0.1).
+// Measured now: 0.7% (this column; 1.1% before the averaged dilation), 0.1% (the 10 cm column, cfl
+// 0.3 against 0.1).
 TEST(MpmCollapse, AThirdOfTheTimeStepChangesTheRunoutByLessThanTwoPercent) {
   const double stable = 0.3 * kCell / seed_beads(1.0e7).wave_speed();
   const Deposit coarse = collapse(1.8, 1.0e7, 0.6, stable);
@@ -97,7 +102,7 @@ TEST(MpmCollapse, AThirdOfTheTimeStepChangesTheRunoutByLessThanTwoPercent) {
 
 // The normalised runout (L_f - L_i) / L_i.
 double normalised_runout(const Deposit& deposit) {
-  return (deposit.runout - kWidth) / kWidth;
+  return (deposit.runout - deposit.width) / deposit.width;
 }
 
 // Short columns keep their top: only a wedge at the foot slides (H_f = H_i below a of about
@@ -108,6 +113,27 @@ TEST(MpmCollapse, AShortColumnKeepsItsTop) {
   EXPECT_NEAR(deposit.height / (a * kWidth), 1.0, 0.02);
   RecordProperty("height_over_initial", std::to_string(deposit.height / (a * kWidth)));
   RecordProperty("runout", std::to_string(normalised_runout(deposit)));
+}
+
+// Tall columns: the runout grows as a power of a. Balmforth & Kerswell 2005 (J. Fluid Mech. 538,
+// 399, abstract) measured (L_f - L_i) / L_i ~ a^(0.9 +- 0.1) in wide channels, which plane
+// strain (no side walls) stands for, against a^(0.65 +- 0.05) in narrow slots, whose side walls
+// add friction (Lube et al. 2005's a^(2/3) is of that kind); the constant depends on the
+// material. The exponent between a = 3 and a = 6 is asserted within their 0.9 +- 0.1, for a
+// column 10 cells wide: 0.88 (runouts 4.52 and 8.31). On 6 cells it is 0.98, at the edge of the
+// band (docs/validation.md, "MPM column collapse").
+TEST(MpmCollapse, TallColumnsRunOutAsAPowerOfTheAspectRatio) {
+  const double width = 10 * kCell;
+  const Deposit three = collapse(3.0, 1.0e7, 1.0, 0.0, width);
+  const Deposit six = collapse(6.0, 1.0e7, 1.1, 0.0, width);
+  const double exponent =
+      std::log(normalised_runout(six) / normalised_runout(three)) / std::log(2.0);
+  EXPECT_NEAR(exponent, 0.9, 0.1);
+  RecordProperty("runout_a3", std::to_string(normalised_runout(three)));
+  RecordProperty("runout_a6", std::to_string(normalised_runout(six)));
+  RecordProperty("runout_exponent", std::to_string(exponent));
+  RecordProperty("height_a3", std::to_string(three.height / width));
+  RecordProperty("height_a6", std::to_string(six.height / width));
 }
 
 }  // namespace

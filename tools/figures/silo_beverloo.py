@@ -15,9 +15,9 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 OUTLETS = np.array([0.06, 0.08, 0.10])  # D [m]
-RATES = np.array([80.6, 143.1, 212.9])  # W [kg/(s m)], whole silo
-CASE_OUTLET, CASE_RATE = 0.14, 368.4
-FITTED_C, FITTED_K = 1.27, 3.2
+RATES = np.array([78.0, 140.0, 208.2])  # W [kg/(s m)], whole silo
+CASE_OUTLET, CASE_RATE = 0.14, 406.3
+FITTED_C, FITTED_K = 1.26, 3.3
 GRAIN, DENSITY, GRAVITY = 0.005, 2200.0, 9.81
 
 
