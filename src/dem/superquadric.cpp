@@ -23,6 +23,25 @@ Power power(double t, double n) {
           n * (n - 1.0) * std::pow(u, n - 2.0)};
 }
 
+// The powers of the scaled coordinates, and s = |x/a|^n2 + |y/b|^n2 with the derivatives of
+// s^(n1/n2) with respect to s (zero on the z axis, where s = 0).
+struct Terms {
+  Power x, y, z;
+  double ds = 0.0;
+  double dds = 0.0;
+};
+
+Terms terms(const Vec3& x, const Vec3& axes, double n1, double n2) {
+  Terms t{power(x.x() / axes.x(), n2), power(x.y() / axes.y(), n2), power(x.z() / axes.z(), n1)};
+  const double s = t.x.value + t.y.value;
+  const double p = n1 / n2;
+  if (s > 0.0) {
+    t.ds = p * std::pow(s, p - 1.0);
+    t.dds = p * (p - 1.0) * std::pow(s, p - 2.0);
+  }
+  return t;
+}
+
 }  // namespace
 
 Superquadric::Superquadric(const Vec3& half_axes, double n1, double n2)
@@ -54,31 +73,19 @@ double Superquadric::value(const Vec3& x) const {
 }
 
 Vec3 Superquadric::gradient(const Vec3& x) const {
-  const Power px = power(x.x() / axes_.x(), n2_);
-  const Power py = power(x.y() / axes_.y(), n2_);
-  const Power pz = power(x.z() / axes_.z(), n1_);
-  const double s = px.value + py.value;
-  const double p = n1_ / n2_;
-  const double ds = s > 0.0 ? p * std::pow(s, p - 1.0) : 0.0;
-  return {ds * px.first / axes_.x(), ds * py.first / axes_.y(), pz.first / axes_.z()};
+  const Terms t = terms(x, axes_, n1_, n2_);
+  return {t.ds * t.x.first / axes_.x(), t.ds * t.y.first / axes_.y(), t.z.first / axes_.z()};
 }
 
 Mat3 Superquadric::hessian(const Vec3& x) const {
-  const Power px = power(x.x() / axes_.x(), n2_);
-  const Power py = power(x.y() / axes_.y(), n2_);
-  const Power pz = power(x.z() / axes_.z(), n1_);
-  const double s = px.value + py.value;
-  const double p = n1_ / n2_;
+  const Terms t = terms(x, axes_, n1_, n2_);
+  const double gx = t.x.first / axes_.x();
+  const double gy = t.y.first / axes_.y();
   Mat3 h = Mat3::Zero();
-  if (s > 0.0) {
-    const double ds = p * std::pow(s, p - 1.0);
-    const double dds = p * (p - 1.0) * std::pow(s, p - 2.0);
-    const Vec3 g(px.first / axes_.x(), py.first / axes_.y(), 0.0);
-    h(0, 0) = dds * g.x() * g.x() + ds * px.second / (axes_.x() * axes_.x());
-    h(1, 1) = dds * g.y() * g.y() + ds * py.second / (axes_.y() * axes_.y());
-    h(0, 1) = h(1, 0) = dds * g.x() * g.y();
-  }
-  h(2, 2) = pz.second / (axes_.z() * axes_.z());
+  h(0, 0) = t.dds * gx * gx + t.ds * t.x.second / (axes_.x() * axes_.x());
+  h(1, 1) = t.dds * gy * gy + t.ds * t.y.second / (axes_.y() * axes_.y());
+  h(0, 1) = h(1, 0) = t.dds * gx * gy;
+  h(2, 2) = t.z.second / (axes_.z() * axes_.z());
   return h;
 }
 
