@@ -68,8 +68,9 @@ Superquadric::Superquadric(const Vec3& half_axes, double n1, double n2)
 }
 
 double Superquadric::value(const Vec3& x) const {
-  const double s = power(x.x() / axes_.x(), n2_).value + power(x.y() / axes_.y(), n2_).value;
-  return std::pow(s, n1_ / n2_) + power(x.z() / axes_.z(), n1_).value - 1.0;
+  const double s =
+      std::pow(std::abs(x.x() / axes_.x()), n2_) + std::pow(std::abs(x.y() / axes_.y()), n2_);
+  return std::pow(s, n1_ / n2_) + std::pow(std::abs(x.z() / axes_.z()), n1_) - 1.0;
 }
 
 Vec3 Superquadric::gradient(const Vec3& x) const {
