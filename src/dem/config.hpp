@@ -39,6 +39,7 @@ struct Config {
   bool seed_tangential_cap = false;         // tangential_cap: seed
   double rayleigh_fraction = 0.2;           // dt = f t_R
   int sort_interval = 50;                   // steps between sorts by cell
+  double neighbour_skin = 0.5;              // skin of the pair list, in largest radii
   std::vector<Species> species;
   // Species a with species b: particle_interactions[a * species.size() + b] (symmetric).
   std::vector<Interaction> particle_interactions;

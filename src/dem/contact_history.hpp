@@ -1,9 +1,8 @@
 #pragma once
-// The history of each particle's contacts (docs/dem.md, "Tangential force"): the tangential and
-// rolling springs of every contact, kept per particle in a fixed number of slots so that a step
-// does not allocate. Both particles of a pair keep their own copy (each particle gathers the
-// forces on itself, DESIGN.md "Data and speed"), and the copies stay opposite to round-off. A
-// contact is known by its partner: a particle id (>= 0) or a wall, -(wall index + 1).
+// The history of each particle's wall contacts (docs/dem.md, "Tangential force"): the tangential
+// and rolling springs of every contact, kept per particle in a fixed number of slots so that a
+// step does not allocate (the pairs of grains keep theirs in the PairList). A contact is known
+// by its partner: a particle id (>= 0) or a wall, -(wall index + 1).
 #include <cstdint>
 #include <span>
 #include <string>

@@ -196,6 +196,13 @@ std::shared_ptr<DemSection> read_dem_section(Reader& root, const io::Case& the_c
   config.rayleigh_fraction =
       section.optional<double>("time_step_fraction", config.rayleigh_fraction, kPositive);
   config.sort_interval = section.optional<int>("sort_interval", config.sort_interval, at_least(1));
+  config.neighbour_skin =
+      section.optional<double>("neighbour_skin", config.neighbour_skin, kPositive);
+  if (config.neighbour_skin > 4.0) {
+    throw section.error("neighbour_skin",
+                        "must be at most 4 largest radii (a wider skin lists far more pairs "
+                        "than touch)");
+  }
   config.species = read_species(section);
   read_interactions(section, config);
   for (const io::WallSpec& wall : the_case.walls)

@@ -24,13 +24,9 @@ double sphere_volume(double radius) {
   return 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
 }
 
-// Slots for the contacts of one particle: the kissing number 12 scaled by the surface a sphere
-// of the largest radius offers to the smallest, ((1 + R_max/R_min) / 2)^2, plus one per wall.
-int contact_capacity(double smallest, double largest, std::size_t walls) {
-  const double ratio = largest / smallest;
-  const double particles = std::ceil(12.0 * std::pow(0.5 * (1.0 + ratio), 2) - 1e-9);
-  return static_cast<int>(
-      std::min<double>(particles + static_cast<double>(walls), ContactHistory::kMaxCapacity));
+// Slots for the wall contacts of one grain: one per wall (at most the history's capacity).
+int wall_slots(std::size_t walls) {
+  return static_cast<int>(std::clamp<std::size_t>(walls, 1, ContactHistory::kMaxCapacity));
 }
 
 // The pose held still: no velocity.
@@ -43,9 +39,8 @@ geometry::RigidPose at_rest(geometry::RigidPose pose) {
 }  // namespace
 
 // One contact as particle i sees it: unit normal n from the partner to i, overlap, the relative
-// velocity of the contact point, and what the partner is.
+// velocity of the contact point, and the pair's properties.
 struct DemSolver::Contact {
-  std::int64_t partner = 0;
   Vec3 normal = Vec3::Zero();
   double overlap = 0.0;
   Vec3 contact_velocity = Vec3::Zero();
@@ -53,6 +48,12 @@ struct DemSolver::Contact {
   PairProperties pair;
   const Interaction* interaction = nullptr;
   double rolling_inertia = 0.0;
+};
+
+struct DemSolver::ContactLoad {
+  Vec3 force;       // on particle i
+  Vec3 tangential;  // its tangential part
+  Vec3 rolling;     // the rolling torque on i
 };
 
 DemSolver::DemSolver(ParticleStore& store, const Domain& domain, const Config& config,
@@ -73,11 +74,11 @@ DemSolver::DemSolver(ParticleStore& store, const Domain& domain, const Config& c
   add_fields(grains);
   make_walls();
   compute_time_step();
-  const auto [smallest, largest] = std::minmax_element(radius_->begin(), radius_->end());
-  largest_radius_ = *largest;
-  grid_ = std::make_unique<CellGrid>(domain_, 2.0 * largest_radius_);
-  history_ = std::make_unique<ContactHistory>(
-      store_.size(), contact_capacity(*smallest, *largest, config_.walls.size()));
+  largest_radius_ = *std::max_element(radius_->begin(), radius_->end());
+  const double skin = config_.neighbour_skin * largest_radius_;
+  grid_ = std::make_unique<CellGrid>(domain_, 2.0 * largest_radius_ + skin);
+  pairs_ = std::make_unique<PairList>(skin);
+  wall_history_ = std::make_unique<ContactHistory>(store_.size(), wall_slots(config_.walls.size()));
   sort_by_cell();
   compute_loads(0.0);
 }
@@ -198,121 +199,142 @@ void DemSolver::drift(double dt) {
   }
 }
 
+// Sorts the grains by cell (neighbours near in memory) and lists the pairs again.
 void DemSolver::sort_by_cell() {
   grid_->build(store_.position());
   const auto order = grid_->cell_order();
   sort_order_.assign(order.begin(), order.end());
   store_.reorder(sort_order_);
-  history_->reorder(sort_order_);
+  wall_history_->reorder(sort_order_);
+  grid_->build(store_.position());
+  pairs_->build(*grid_, store_.position(), *radius_, sort_order_);
 }
 
+// Each pair once (in parallel, each writing its own load), then each grain gathers its pairs'
+// loads and adds its wall contacts.
 void DemSolver::compute_loads(double dt) {
-  grid_->build(store_.position());
+  const auto& x = store_.position();
+  if (pairs_->stale(x, domain_)) {
+    grid_->build(x);
+    pairs_->build(*grid_, x, *radius_);
+  }
+#pragma omp parallel for schedule(static)
+  for (std::size_t k = 0; k < pairs_->size(); ++k)
+    pair_loads(k, dt);
   bool overflow = false;
-#pragma omp parallel for schedule(dynamic, 256) reduction(|| : overflow)
-  for (std::size_t i = 0; i < store_.size(); ++i)
-    loads_on(i, dt, overflow);
+#pragma omp parallel for schedule(static) reduction(|| : overflow)
+  for (std::size_t i = 0; i < store_.size(); ++i) {
+    (*force_)[i] = Vec3::Zero();
+    (*torque_)[i] = Vec3::Zero();
+    pairs_->gather(i, (*force_)[i], (*torque_)[i]);
+    overflow = !wall_loads(i, dt) || overflow;
+  }
   if (overflow) {
     throw RunError(
-        fmt::format("a grain has more than {} contacts at once (the slots of its "
-                    "contact history); the grains overlap far too much: check the "
-                    "time step and the stiffness",
-                    history_->capacity()));
+        fmt::format("a grain touches more than {} walls at once (the slots of its "
+                    "wall contact history)",
+                    wall_history_->capacity()));
   }
 }
 
-void DemSolver::loads_on(std::size_t i, double dt, bool& overflow) {
+void DemSolver::pair_loads(std::size_t k, double dt) {
   const auto& x = store_.position();
   const auto& v = store_.velocity();
   const auto& m = store_.mass();
-  const auto& id = store_.id();
   const auto& radius = *radius_;
   const auto& omega = *angular_velocity_;
-  const std::size_t n_species = config_.species.size();
-  const int s_i = (*species_)[i];
+  const std::size_t i = pairs_->first(k);
+  const std::size_t j = pairs_->second(k);
+  const Vec3 rij = domain_.displacement(x[i], x[j]);
+  const double reach = radius[i] + radius[j];
+  const double r2 = rij.squaredNorm();
+  if (r2 >= reach * reach) {
+    pairs_->set_touching(k, false);
+    return;
+  }
+  const double distance = std::sqrt(r2);
+  Contact c;
+  c.normal = rij / distance;
+  c.overlap = reach - distance;
+  const double lever_i = radius[i] - 0.5 * c.overlap;
+  const double lever_j = radius[j] - 0.5 * c.overlap;
+  c.contact_velocity =
+      v[i] - v[j] - lever_i * omega[i].cross(c.normal) - lever_j * omega[j].cross(c.normal);
+  c.relative_angular_velocity = omega[i] - omega[j];
+  const std::size_t pair = (*species_)[i] * config_.species.size() + (*species_)[j];
+  c.pair = pair_properties(particle_materials_[pair], radius[i], radius[j], m[i], m[j]);
+  c.interaction = &config_.particle_interactions[pair];
   const double inertia_i = 1.4 * m[i] * radius[i] * radius[i];  // about the contact point
-  (*force_)[i] = Vec3::Zero();
-  (*torque_)[i] = Vec3::Zero();
+  const double inertia_j = 1.4 * m[j] * radius[j] * radius[j];
+  c.rolling_inertia = 1.0 / (1.0 / inertia_i + 1.0 / inertia_j);
+  PairHistory& history = pairs_->history(k);
+  const ContactLoad load = load_of(c, history.spring, history.rolling_spring, dt);
+  PairLoad& out = pairs_->load(k);
+  out.force = load.force;
+  out.torque_i = (-lever_i * c.normal).cross(load.tangential) + load.rolling;
+  out.torque_j = (-lever_j * c.normal).cross(load.tangential) - load.rolling;
+  pairs_->set_touching(k, true);
+}
+
+// The wall contacts of grain i; false when its wall history has no slot left.
+bool DemSolver::wall_loads(std::size_t i, double dt) {
+  const auto& x = store_.position();
+  const auto& v = store_.velocity();
+  const auto& m = store_.mass();
+  const double radius = (*radius_)[i];
+  const Vec3& omega = (*angular_velocity_)[i];
+  const int s_i = (*species_)[i];
   std::uint64_t touched = 0;
-  auto add = [&](Contact& contact) {
-    const int k = history_->find_or_add(i, contact.partner);
-    if (k < 0) {
-      overflow = true;
-      return;
-    }
-    touched |= std::uint64_t{1} << k;
-    apply(i, contact, history_->slot(i, k), dt);
-  };
-  grid_->for_each_neighbour(i, x, [&](std::size_t j, const Vec3& rij, double r2) {
-    const double reach = radius[i] + radius[j];
-    if (j == i || r2 >= reach * reach)
-      return;
-    const double distance = std::sqrt(r2);
-    Contact c;
-    c.partner = id[j];
-    c.normal = rij / distance;
-    c.overlap = reach - distance;
-    const double lever_i = radius[i] - 0.5 * c.overlap;
-    const double lever_j = radius[j] - 0.5 * c.overlap;
-    c.contact_velocity =
-        v[i] - v[j] - lever_i * omega[i].cross(c.normal) - lever_j * omega[j].cross(c.normal);
-    c.relative_angular_velocity = omega[i] - omega[j];
-    const std::size_t pair = s_i * n_species + (*species_)[j];
-    c.pair = pair_properties(particle_materials_[pair], radius[i], radius[j], m[i], m[j]);
-    c.interaction = &config_.particle_interactions[pair];
-    const double inertia_j = 1.4 * m[j] * radius[j] * radius[j];
-    c.rolling_inertia = 1.0 / (1.0 / inertia_i + 1.0 / inertia_j);
-    add(c);
-  });
+  bool fits = true;
   for (std::size_t w = 0; w < walls_.size(); ++w) {
     const geometry::RigidPose& pose = walls_[w].pose;
     const Vec3 local = pose.rotation.transpose() * (x[i] - pose.origin) + pose.start_origin;
     geometry::SurfacePoint surface;
-    if (!walls_[w].surface->nearest(local, radius[i], surface) || surface.gap >= radius[i])
+    if (!walls_[w].surface->nearest(local, radius, surface) || surface.gap >= radius)
       continue;
+    const int slot = wall_history_->find_or_add(i, ContactHistory::wall_partner(w));
+    if (slot < 0) {
+      fits = false;
+      continue;
+    }
+    touched |= std::uint64_t{1} << slot;
     Contact c;
-    c.partner = ContactHistory::wall_partner(w);
     c.normal = pose.rotation * surface.normal;
-    c.overlap = radius[i] - surface.gap;
+    c.overlap = radius - surface.gap;
     const Vec3 point = pose.place(surface.point);
-    const double lever_i = radius[i] - 0.5 * c.overlap;
-    c.contact_velocity = v[i] - pose.velocity_at(point) - lever_i * omega[i].cross(c.normal);
-    c.relative_angular_velocity = omega[i] - pose.angular_velocity;
-    c.pair = pair_properties(wall_materials_[w * n_species + s_i], radius[i],
+    const double lever = radius - 0.5 * c.overlap;
+    c.contact_velocity = v[i] - pose.velocity_at(point) - lever * omega.cross(c.normal);
+    c.relative_angular_velocity = omega - pose.angular_velocity;
+    c.pair = pair_properties(wall_materials_[w * config_.species.size() + s_i], radius,
                              std::numeric_limits<double>::infinity(), m[i],
                              std::numeric_limits<double>::infinity());
     c.interaction = &config_.wall_interaction(w, static_cast<std::size_t>(s_i));
-    c.rolling_inertia = inertia_i;
-    add(c);
+    c.rolling_inertia = 1.4 * m[i] * radius * radius;
+    ContactSlot& history = wall_history_->slot(i, slot);
+    const ContactLoad load = load_of(c, history.spring, history.rolling_spring, dt);
+    (*force_)[i] += load.force;
+    (*torque_)[i] += (-lever * c.normal).cross(load.tangential) + load.rolling;
   }
-  history_->retain(i, touched);
+  wall_history_->retain(i, touched);
+  return fits;
 }
 
 // The normal, tangential and rolling loads of one contact on particle i (docs/dem.md).
-void DemSolver::apply(std::size_t i, const Contact& c, ContactSlot& slot, double dt) {
+DemSolver::ContactLoad DemSolver::load_of(const Contact& c, Vec3& spring, Vec3& rolling_spring,
+                                          double dt) const {
   const double u_n = c.contact_velocity.dot(c.normal);
-  const double normal_force = normal_law_->force(c.pair, c.overlap, u_n);
+  const NormalResponse normal = normal_law_->respond(c.pair, c.overlap, u_n);
+  const double normal_force = normal.force;
   const Interaction& with = *c.interaction;
-  TangentialStep tangential{normal_law_->tangential_stiffness(c.pair, c.overlap),
-                            normal_force,
-                            c.normal,
-                            c.contact_velocity - u_n * c.normal,
-                            with.friction,
-                            dt};
+  TangentialStep tangential{normal.tangential_stiffness,         normal_force,  c.normal,
+                            c.contact_velocity - u_n * c.normal, with.friction, dt};
   if (config_.seed_tangential_cap)
     tangential.spring_cap = seed_spring_cap(c.pair, with.friction, c.overlap);
-  const Vec3 f_t = tangential_force(c.pair, tangential, slot.spring);
-  const RollingStep rolling{normal_force,
-                            normal_law_->normal_stiffness(c.pair, c.overlap),
-                            c.pair.radius,
-                            c.rolling_inertia,
-                            c.normal,
-                            c.relative_angular_velocity,
-                            with.rolling_friction,
-                            dt};
-  const double lever = (*radius_)[i] - 0.5 * c.overlap;
-  (*force_)[i] += normal_force * c.normal + f_t;
-  (*torque_)[i] += (-lever * c.normal).cross(f_t) + rolling_->torque(rolling, slot.rolling_spring);
+  const Vec3 f_t = tangential_force(c.pair, tangential, spring);
+  const RollingStep rolling{
+      normal_force, normal.normal_stiffness,     c.pair.radius,         c.rolling_inertia,
+      c.normal,     c.relative_angular_velocity, with.rolling_friction, dt};
+  return {normal_force * c.normal + f_t, f_t, rolling_->torque(rolling, rolling_spring)};
 }
 
 void DemSolver::set_species(std::size_t i, int species) {
@@ -332,14 +354,15 @@ std::map<std::string, double> DemSolver::derived_parameters() const {
           {"rayleigh_time [s]", rayleigh_time_},
           {"time_step [s]", time_step_},
           {"largest_radius [m]", largest_radius_},
-          {"contact_slots [-]", static_cast<double>(history_->capacity())}};
+          {"neighbour_skin [m]", pairs_->skin()}};
 }
 
 // Not saved: the walls' poses (each step sets them from the time before it uses them) and the
 // time step (the constructor derives it from the grains, which the same case makes again).
 void DemSolver::save(StateArchive& archive, const std::string& prefix) const {
   save_store(store_, archive, prefix);
-  history_->save(archive, prefix + "contacts/");
+  pairs_->save(archive, prefix + "pairs/", store_.id());
+  wall_history_->save(archive, prefix + "wall_contacts/");
   archive.put_scalar(prefix + "time", time_);
   archive.put_integers(prefix + "steps", std::vector<std::int64_t>{steps_, walls_frozen_ ? 1 : 0});
   archive.put_doubles(prefix + "settling", std::vector<double>{settle_time_, settle_energy_});
@@ -353,7 +376,9 @@ void DemSolver::restore(const StateArchive& archive, const std::string& prefix) 
       throw StateError(fmt::format("{}fields/species: a grain of species {}, the case has {}",
                                    prefix, s, species_count));
   }
-  history_->restore(archive, prefix + "contacts/");
+  wall_history_->restore(archive, prefix + "wall_contacts/");
+  grid_->build(store_.position());
+  pairs_->restore(archive, prefix + "pairs/", *grid_, store_.position(), *radius_, store_.id());
   const auto steps = archive.integers(prefix + "steps");
   const auto settling = archive.doubles(prefix + "settling");
   if (steps.size() != 2 || settling.size() != 2)
@@ -368,12 +393,12 @@ void DemSolver::restore(const StateArchive& archive, const std::string& prefix) 
 double DemSolver::mean_contacts() const {
   double sum = 0.0;
   for (std::size_t i = 0; i < store_.size(); ++i)
-    sum += history_->count(i);
+    sum += pairs_->contacts(i) + wall_history_->count(i);
   return sum / static_cast<double>(store_.size());
 }
 
 std::size_t DemSolver::bytes() const {
-  return store_.bytes() + grid_->bytes() + history_->bytes();
+  return store_.bytes() + grid_->bytes() + pairs_->bytes() + wall_history_->bytes();
 }
 
 }  // namespace partimix::dem

@@ -1,8 +1,9 @@
 #pragma once
 // DEM for spheres (docs/dem.md): Hertz-Mindlin (or linear) contacts with history, rolling
 // resistance, moving walls, periodic axes, velocity Verlet at a fraction of the Rayleigh time.
-// Each particle gathers the loads on itself from its contacts (DESIGN.md, "Data and speed"), so
-// every pair is evaluated from both sides and the result does not depend on the thread count.
+// Each pair of grains is evaluated once from a neighbour list with a skin; each grain then
+// gathers its pairs' loads in a fixed order (DESIGN.md, "Data and speed"), so the result does
+// not depend on the thread count.
 #include <memory>
 #include <string_view>
 #include <vector>
@@ -10,6 +11,7 @@
 #include "dem/config.hpp"
 #include "dem/contact_history.hpp"
 #include "dem/normal_contact.hpp"
+#include "dem/pair_list.hpp"
 #include "dem/rolling_resistance.hpp"
 #include "geometry/motion.hpp"
 #include "particles/cell_grid.hpp"
@@ -64,8 +66,12 @@ class DemSolver final : public Solver {
   void drift(double dt);
   void sort_by_cell();
   void compute_loads(double dt);
-  void loads_on(std::size_t i, double dt, bool& overflow);
-  void apply(std::size_t i, const Contact& contact, ContactSlot& slot, double dt);
+  void pair_loads(std::size_t k, double dt);
+  bool wall_loads(std::size_t i, double dt);
+  // The load of one contact on particle i: the force, and the tangential force and rolling
+  // torque (for the torques about each centre).
+  struct ContactLoad;
+  ContactLoad load_of(const Contact& contact, Vec3& spring, Vec3& rolling_spring, double dt) const;
 
   ParticleStore& store_;
   Domain domain_;
@@ -84,7 +90,8 @@ class DemSolver final : public Solver {
   std::vector<double>* orientation_w_ = nullptr;
   std::vector<Vec3>* orientation_v_ = nullptr;
   std::unique_ptr<CellGrid> grid_;
-  std::unique_ptr<ContactHistory> history_;
+  std::unique_ptr<PairList> pairs_;
+  std::unique_ptr<ContactHistory> wall_history_;
   std::vector<std::uint32_t> sort_order_;
   double largest_radius_ = 0.0;
   double rayleigh_time_ = 0.0;

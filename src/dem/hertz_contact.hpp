@@ -9,11 +9,10 @@ namespace partimix::dem {
 
 class HertzContact final : public NormalContactLaw {
  public:
-  double force(const PairProperties& pair, double overlap, double normal_velocity) const override;
-  // S_n = 2 E* sqrt(R* d).
-  double normal_stiffness(const PairProperties& pair, double overlap) const override;
-  // Mindlin: k_t = 8 G* sqrt(R* d).
-  double tangential_stiffness(const PairProperties& pair, double overlap) const override;
+  // With the contact radius a = sqrt(R* d): S_n = 2 E* a, F_n = (2/3) S_n d
+  // - 2 sqrt(5/6) beta sqrt(m* S_n) u_n (the form above), and Mindlin's k_t = 8 G* a.
+  NormalResponse respond(const PairProperties& pair, double overlap,
+                         double normal_velocity) const override;
 };
 
 }  // namespace partimix::dem

@@ -8,13 +8,10 @@ namespace partimix::dem {
 class LinearContact final : public NormalContactLaw {
  public:
   explicit LinearContact(double stiffness) : stiffness_(stiffness) {}
-  double force(const PairProperties& pair, double overlap, double normal_velocity) const override;
-  double normal_stiffness(const PairProperties&, double) const override { return stiffness_; }
   // k_t = (2/7) k_n (Silbert et al. 2001; LIGGGHTS's hooke default): the tangential and normal
   // oscillations of a sphere then have one period.
-  double tangential_stiffness(const PairProperties&, double) const override {
-    return 2.0 / 7.0 * stiffness_;
-  }
+  NormalResponse respond(const PairProperties& pair, double overlap,
+                         double normal_velocity) const override;
 
  private:
   double stiffness_;  // k_n [N/m]

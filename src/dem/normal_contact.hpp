@@ -7,18 +7,22 @@
 
 namespace partimix::dem {
 
+struct NormalResponse {
+  double force = 0.0;  // on particle i along n [N] (positive: repulsive)
+  // The tangent normal stiffness dF_n/d(overlap) of the elastic part [N/m]: the rolling spring
+  // of the elastic-plastic rolling resistance is made from it.
+  double normal_stiffness = 0.0;
+  // The stiffness k_t of the tangential spring [N/m] (docs/dem.md, "Tangential force").
+  double tangential_stiffness = 0.0;
+};
+
 class NormalContactLaw {
  public:
   virtual ~NormalContactLaw() = default;
-  // The normal force on particle i along n (positive: repulsive) at overlap > 0, for the normal
-  // relative velocity u_n = v_c . n of the contact point (negative while the pair approaches).
-  virtual double force(const PairProperties& pair, double overlap,
-                       double normal_velocity) const = 0;
-  // The tangent normal stiffness dF_n/d(overlap) of the elastic part [N/m]: the rolling spring
-  // of the elastic-plastic rolling resistance is made from it.
-  virtual double normal_stiffness(const PairProperties& pair, double overlap) const = 0;
-  // The stiffness k_t of the tangential spring [N/m] (docs/dem.md, "Tangential force").
-  virtual double tangential_stiffness(const PairProperties& pair, double overlap) const = 0;
+  // The law at overlap > 0 for the normal relative velocity u_n = v_c . n of the contact point
+  // (negative while the pair approaches): all of it in one call, which shares the square roots.
+  virtual NormalResponse respond(const PairProperties& pair, double overlap,
+                                 double normal_velocity) const = 0;
 };
 
 struct NormalLawParameters {

@@ -11,20 +11,21 @@ double seed_spring_cap(const PairProperties& pair, double friction, double overl
 
 namespace {
 
-// R(n_old -> n) xi: the normal part removed and the old length restored (Luding 2008).
+// R(n_old -> n) xi: the normal part removed and the old length restored (Luding 2008). Squared
+// lengths until one square root is needed (this runs for every contact of every step).
 void carry_into_plane(Vec3& spring, const Vec3& normal) {
-  const double length = spring.norm();
-  if (length == 0.0)
+  const double length2 = spring.squaredNorm();
+  if (length2 == 0.0)
     return;
   spring -= spring.dot(normal) * normal;
-  const double in_plane = spring.norm();
-  spring = in_plane > 0.0 ? Vec3(spring * (length / in_plane)) : Vec3::Zero();
+  const double in_plane2 = spring.squaredNorm();
+  spring = in_plane2 > 0.0 ? Vec3(spring * std::sqrt(length2 / in_plane2)) : Vec3::Zero();
 }
 
 void limit_length(Vec3& spring, double cap) {
-  const double length = spring.norm();
-  if (length > cap)
-    spring *= cap / length;
+  const double length2 = spring.squaredNorm();
+  if (length2 > cap * cap)
+    spring *= cap / std::sqrt(length2);
 }
 
 }  // namespace
@@ -37,10 +38,10 @@ Vec3 tangential_force(const PairProperties& pair, const TangentialStep& step, Ve
       2.0 * std::sqrt(5.0 / 6.0) * pair.damping * std::sqrt(step.stiffness * pair.mass);
   const Vec3 trial = -step.stiffness * spring - damping * step.tangential_velocity;
   const double coulomb = step.friction * std::max(step.normal_force, 0.0);
-  const double size = trial.norm();
-  if (size <= coulomb)
+  const double size2 = trial.squaredNorm();
+  if (size2 <= coulomb * coulomb)
     return trial;
-  const Vec3 sliding = trial * (coulomb / size);
+  const Vec3 sliding = trial * (coulomb / std::sqrt(size2));
   spring = -sliding / step.stiffness;
   return sliding;
 }

@@ -274,7 +274,8 @@ TEST_F(BadInput, APeriodicAxisTooShortIsALocatedErrorNamingTheMinimum) {
   const Outcome grains = run_case(dem);
   expect_rejected(grains);
   EXPECT_THAT(grains.err, ContainsRegex(location(line_of(dem, "periodic:"), "domain.periodic")));
-  EXPECT_THAT(grains.err, HasSubstr("3 x 0.008 m = 0.024 m"));
+  // The interaction radius of grains of 4 mm: 2 R + the pair list's skin of 0.5 R.
+  EXPECT_THAT(grains.err, HasSubstr("3 x 0.01 m = 0.03 m"));
 }
 
 TEST_F(BadInput, ZeroThreadsIsRefusedInPlainWords) {

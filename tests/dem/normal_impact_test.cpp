@@ -56,7 +56,7 @@ Impact collide(const NormalContactLaw& law, const PairProperties& pair, double s
   do {
     rate += 0.5 * dt * accel;
     overlap += dt * rate;
-    accel = -law.force(pair, std::max(overlap, 0.0), -rate) / pair.mass;
+    accel = -law.respond(pair, std::max(overlap, 0.0), -rate).force / pair.mass;
     rate += 0.5 * dt * accel;
     time += dt;
     impact.largest_overlap = std::max(impact.largest_overlap, overlap);

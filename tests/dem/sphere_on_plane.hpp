@@ -49,16 +49,13 @@ struct SphereOnPlane {
     const double lever = radius - 0.5 * overlap;
     const Vec3 contact_velocity = velocity - lever * angular_velocity.cross(n);
     const double u_n = contact_velocity.dot(n);
-    normal_force = normal_law->force(pair, overlap, u_n);
-    const TangentialStep tangential{normal_law->tangential_stiffness(pair, overlap),
-                                    normal_force,
-                                    n,
-                                    contact_velocity - u_n * n,
-                                    friction,
-                                    dt};
+    const NormalResponse response = normal_law->respond(pair, overlap, u_n);
+    normal_force = response.force;
+    const TangentialStep tangential{response.tangential_stiffness, normal_force, n,
+                                    contact_velocity - u_n * n,    friction,     dt};
     const Vec3 f_t = tangential_force(pair, tangential, spring);
     const RollingStep roll{normal_force,
-                           normal_law->normal_stiffness(pair, overlap),
+                           response.normal_stiffness,
                            pair.radius,
                            inertia() + mass * radius * radius,
                            n,

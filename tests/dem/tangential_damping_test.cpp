@@ -56,7 +56,7 @@ double worst_speed_error(double restitution, Oscillator& theory) {
   s.velocity = Vec3(kSpeed, 0.0, 0.0);
 
   const double lever = kRadius - 0.5 * overlap;
-  const double stiffness = law->tangential_stiffness(s.pair, overlap);
+  const double stiffness = law->respond(s.pair, overlap, 0.0).tangential_stiffness;
   const double m_eff = 1.0 / (1.0 / s.mass + lever * lever / s.inertia());
   const double c_t = 2.0 * std::sqrt(5.0 / 6.0) * s.pair.damping * std::sqrt(stiffness * s.mass);
   theory = {std::sqrt(stiffness / m_eff), c_t / (2.0 * std::sqrt(stiffness * m_eff)),
