@@ -90,4 +90,26 @@ Mat3 Superquadric::hessian(const Vec3& x) const {
   return h;
 }
 
+// docs/dem.md, "Walls and superquadrics": with (A, B, C) = (a |d_x|, b |d_y|, c |d_z|) and
+// S = A^(n2/(n2-1)) + B^(n2/(n2-1)), the point is t (A^(1/(n2-1)), B^(1/(n2-1))) in the scaled
+// x-y coordinates and (lambda C)^(1/(n1-1)) along z, lambda = t^(n1-1) S^(n1/n2-1).
+Vec3 Superquadric::support(const Vec3& direction) const {
+  const Vec3 d = direction.normalized();
+  const double big_a = axes_.x() * std::abs(d.x());
+  const double big_b = axes_.y() * std::abs(d.y());
+  const double big_c = axes_.z() * std::abs(d.z());
+  const double q2 = n2_ / (n2_ - 1.0);
+  const double q1 = n1_ / (n1_ - 1.0);
+  const double s = std::pow(big_a, q2) + std::pow(big_b, q2);
+  if (s == 0.0)
+    return {0.0, 0.0, signum(d.z()) * axes_.z()};
+  const double p = n1_ / n2_;
+  const double t = std::pow(std::pow(s, p) + std::pow(s, (p - 1.0) * q1) * std::pow(big_c, q1),
+                            -1.0 / n1_);
+  const double lambda = std::pow(t, n1_ - 1.0) * std::pow(s, p - 1.0);
+  return {signum(d.x()) * axes_.x() * t * std::pow(big_a, 1.0 / (n2_ - 1.0)),
+          signum(d.y()) * axes_.y() * t * std::pow(big_b, 1.0 / (n2_ - 1.0)),
+          signum(d.z()) * axes_.z() * std::pow(lambda * big_c, 1.0 / (n1_ - 1.0))};
+}
+
 }  // namespace partimix::dem

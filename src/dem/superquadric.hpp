@@ -15,6 +15,9 @@ class Superquadric {
   double value(const Vec3& x) const;
   Vec3 gradient(const Vec3& x) const;
   Mat3 hessian(const Vec3& x) const;
+  // The surface point whose outward normal is along `direction` (any length > 0): the point
+  // farthest along it, in closed form (docs/dem.md, "Walls and superquadrics").
+  Vec3 support(const Vec3& direction) const;
 
   double volume() const { return volume_; }
   // Principal moments of inertia per unit density, about the body axes x, y, z.

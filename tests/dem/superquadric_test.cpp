@@ -1,7 +1,8 @@
 // The superquadric shape of dem/superquadric.hpp (docs/dem.md, "Superquadric grains"): the
 // volume and principal moments of a sphere and an ellipsoid against their closed forms (1e-12),
 // of a blocky grain against a midpoint quadrature over its bounding box (0.3%), and the
-// gradient and Hessian against central differences of the value (1e-6 relative).
+// gradient and Hessian against central differences of the value (1e-6 relative), and the
+// support point against the surface's farthest point along a direction.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -89,6 +90,37 @@ TEST(Superquadric, GradientAndHessianMatchCentralDifferences) {
       for (int m = 0; m < 3; ++m)
         ASSERT_NEAR(h(m, k), dh[m], 1e-6 * (1.0 + h.cwiseAbs().maxCoeff()));
     }
+  }
+}
+
+// The support point lies on the surface (|F| < 1e-12), its outward normal is along the
+// direction (1e-9 rad), and no point of a dense sampling of the surface lies farther along it.
+TEST(Superquadric, SupportPointIsTheFarthestAlongTheDirection) {
+  std::mt19937 random(11);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  for (const Vec3& shape : {Vec3(2, 2, 2), Vec3(2, 3, 2), Vec3(4, 6, 2), Vec3(10, 8, 3)}) {
+    const Superquadric grain(Vec3(1.0, 1.5, 2.0), shape.x(), shape.y());
+    for (int sample = 0; sample < 200; ++sample) {
+      const Vec3 d = Vec3(normal(random), normal(random), normal(random)).normalized();
+      const Vec3 x = grain.support(d);
+      ASSERT_NEAR(grain.value(x), 0.0, 1e-12);
+      const Vec3 g = grain.gradient(x).normalized();
+      ASSERT_LT(g.cross(d).norm(), 1e-9);
+      ASSERT_GT(g.dot(d), 0.0);
+      // Surface points along random rays from the centre (bisection on F), none farther out.
+      for (int ray = 0; ray < 50; ++ray) {
+        const Vec3 e = Vec3(normal(random), normal(random), normal(random)).normalized();
+        double inside = 0.0;
+        double outside = 3.0;
+        for (int halving = 0; halving < 60; ++halving) {
+          const double middle = 0.5 * (inside + outside);
+          (grain.value(middle * e) < 0.0 ? inside : outside) = middle;
+        }
+        ASSERT_LE(d.dot(inside * e), d.dot(x) + 1e-12);
+      }
+    }
+    EXPECT_NEAR(grain.support(Vec3(0, 0, -5)).z(), -2.0, 1e-15);
+    EXPECT_NEAR(grain.support(Vec3(3, 0, 0)).x(), 1.0, 1e-12);
   }
 }
 
