@@ -1,10 +1,14 @@
 #pragma once
 // The settings of the DEM solver (docs/dem.md; case keys in docs/case-reference.md, "dem").
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "dem/pair_properties.hpp"
+#include "dem/superquadric.hpp"
 #include "geometry/motion.hpp"
 #include "geometry/surface.hpp"
 
@@ -14,6 +18,8 @@ struct Species {
   std::string name;
   double density = 2500.0;  // [kg/m^3]
   Material material{1.0e7, 0.3};
+  // Every grain of the species has this shape; none: spheres, each of its own radius.
+  std::optional<Superquadric> shape;
 };
 
 // Restitution and friction of one pair: two species, or a species and the walls.
@@ -56,8 +62,9 @@ struct Grains {
   std::vector<Vec3> position;
   std::vector<double> radius;
   std::vector<int> species;
-  std::vector<Vec3> velocity;          // empty: at rest
-  std::vector<Vec3> angular_velocity;  // empty: not spinning
+  std::vector<Vec3> velocity;                   // empty: at rest
+  std::vector<Vec3> angular_velocity;           // empty: not spinning
+  std::vector<Eigen::Quaterniond> orientation;  // body to world; empty: unturned
 };
 
 }  // namespace partimix::dem

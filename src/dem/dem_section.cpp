@@ -1,6 +1,8 @@
 #include "dem/dem_section.hpp"
 
+#include <cmath>
 #include <filesystem>
+#include <numbers>
 
 #include <fmt/format.h>
 
@@ -21,6 +23,34 @@ Material read_material(Reader& section, const Material& fallback) {
           section.optional<double>("poisson_ratio", fallback.poisson_ratio, kNonNegative)};
 }
 
+// `shape`: a superquadric by its half-axes, or by the seed's aspect ratio sigma = c / a (a = b)
+// and the radius of the sphere of the same volume; blockiness [n1, n2] (default [2, 2], an
+// ellipsoid). docs/dem.md, "Superquadric grains".
+Superquadric read_shape(Reader& shape) {
+  const Vec3 blockiness = shape.vector("blockiness", 2, Vec3(2.0, 2.0, 0.0));
+  if (!(blockiness.x() >= 2.0 && blockiness.x() <= 20.0 && blockiness.y() >= 2.0 &&
+        blockiness.y() <= 20.0))
+    throw shape.error("blockiness", "n1 and n2 must lie in [2, 20]");
+  if (shape.contains("half_axes") == shape.contains("aspect_ratio")) {
+    throw shape.error("half_axes",
+                      "give either half_axes [a, b, c] or aspect_ratio (c / a, a = b) with "
+                      "equivalent_radius");
+  }
+  if (shape.contains("half_axes")) {
+    const Vec3 axes = shape.vector("half_axes", 3);
+    if (!(axes.minCoeff() > 0.0) || !std::isfinite(axes.maxCoeff()))
+      throw shape.error("half_axes", "the half-axes must be positive and finite");
+    return Superquadric(axes, blockiness.x(), blockiness.y());
+  }
+  const double sigma = shape.required<double>("aspect_ratio", kPositive);
+  const double radius = shape.required<double>("equivalent_radius", kPositive);
+  if (sigma > 100.0 || sigma < 0.01)
+    throw shape.error("aspect_ratio", "must lie in [0.01, 100]");
+  const Superquadric unit(Vec3(1.0, 1.0, sigma), blockiness.x(), blockiness.y());
+  const double a = radius * std::cbrt(4.0 / 3.0 * std::numbers::pi / unit.volume());
+  return Superquadric(Vec3(a, a, sigma * a), blockiness.x(), blockiness.y());
+}
+
 std::vector<Species> read_species(Reader& section) {
   std::vector<Species> species;
   for (Reader& item : section.list("species")) {
@@ -30,6 +60,11 @@ std::vector<Species> read_species(Reader& section) {
       throw item.error("name", "'wall' names the walls in interactions.pairs; choose another");
     s.density = item.required<double>("density", kPositive);
     s.material = read_material(item, s.material);
+    if (item.contains("shape")) {
+      Reader shape = item.map("shape");
+      s.shape = read_shape(shape);
+      shape.done();
+    }
     item.done();
     species.push_back(s);
   }

@@ -71,6 +71,10 @@ DemSolver::DemSolver(ParticleStore& store, const Domain& domain, const Config& c
     throw config_error("dem.rolling_resistance",
                        "unknown rolling resistance model '" + config.rolling_resistance + "'");
   }
+  for (const Species& species : config.species) {
+    if (species.shape)
+      throw config_error("dem.species", "superquadric grains are not in the solver yet");
+  }
   add_fields(grains);
   make_walls();
   compute_time_step();

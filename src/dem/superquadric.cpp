@@ -104,8 +104,8 @@ Vec3 Superquadric::support(const Vec3& direction) const {
   if (s == 0.0)
     return {0.0, 0.0, signum(d.z()) * axes_.z()};
   const double p = n1_ / n2_;
-  const double t = std::pow(std::pow(s, p) + std::pow(s, (p - 1.0) * q1) * std::pow(big_c, q1),
-                            -1.0 / n1_);
+  const double t =
+      std::pow(std::pow(s, p) + std::pow(s, (p - 1.0) * q1) * std::pow(big_c, q1), -1.0 / n1_);
   const double lambda = std::pow(t, n1_ - 1.0) * std::pow(s, p - 1.0);
   return {signum(d.x()) * axes_.x() * t * std::pow(big_a, 1.0 / (n2_ - 1.0)),
           signum(d.y()) * axes_.y() * t * std::pow(big_b, 1.0 / (n2_ - 1.0)),

@@ -3,6 +3,9 @@
 // eq. 1): F(X) = (|x/a|^n2 + |y/b|^n2)^(n1/n2) + |z/c|^n1 - 1, negative inside. Its value,
 // gradient and Hessian (for the midway-point Newton iteration), volume and principal moments of
 // inertia (Jaklič, Leonardis & Solina 2000), and a bounding radius.
+#include <cmath>
+#include <numbers>
+
 #include "core/vec.hpp"
 
 namespace partimix::dem {
@@ -19,7 +22,12 @@ class Superquadric {
   // farthest along it, in closed form (docs/dem.md, "Walls and superquadrics").
   Vec3 support(const Vec3& direction) const;
 
+  const Vec3& half_axes() const { return axes_; }
+  double n1() const { return n1_; }
+  double n2() const { return n2_; }
   double volume() const { return volume_; }
+  // The radius of the sphere of the same volume (the Hertz radius, docs/dem.md).
+  double equivalent_radius() const { return std::cbrt(0.75 * volume_ / std::numbers::pi); }
   // Principal moments of inertia per unit density, about the body axes x, y, z.
   const Vec3& unit_inertia() const { return unit_inertia_; }
   // The radius of a sphere about the centre that holds the whole grain.

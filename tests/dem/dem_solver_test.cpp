@@ -34,7 +34,7 @@ constexpr double kDensity = 2500.0;
 
 Config one_species(double restitution, double friction) {
   Config config;
-  config.species = {Species{"grain", kDensity, {1.0e7, 0.3}}};
+  config.species = {Species{"grain", kDensity, {1.0e7, 0.3}, std::nullopt}};
   config.particle_interactions = {Interaction{restitution, friction, 0.0}};
   config.wall_interactions = {Interaction{restitution, friction, 0.0}};
   return config;
@@ -58,7 +58,7 @@ double rebound_speed(double restitution, double dt_fraction_of_rayleigh) {
   add_plane(config, Vec3::Zero(), Vec3::UnitY());
   ParticleStore store;
   DemSolver solver(store, box(0.05), config, Vec3::Zero(),
-                   Grains{{Vec3(0.0, 1.001 * kRadius, 0.0)}, {kRadius}, {0}, {}, {}});
+                   Grains{{Vec3(0.0, 1.001 * kRadius, 0.0)}, {kRadius}, {0}, {}, {}, {}});
   store.velocity()[0] = Vec3(0.0, -1.0, 0.0);
   const double dt = dt_fraction_of_rayleigh > 0.0
                         ? dt_fraction_of_rayleigh * solver.derived_parameters()["rayleigh_time [s]"]
@@ -82,6 +82,7 @@ TEST(DemSolver, HeadOnPairConservesMomentumAndReboundsAtTheRestitution) {
                    Grains{{Vec3(-1.01 * kRadius, 0.0, 0.0), Vec3(1.01 * kRadius, 0.0, 0.0)},
                           {kRadius, kRadius},
                           {0, 0},
+                          {},
                           {},
                           {}});
   const std::size_t left = store.id()[0] == 0 ? 0 : 1;
@@ -109,7 +110,7 @@ double incline_distance(double alpha, double friction, double duration) {
   const double rest = std::pow(
       mass * g * std::cos(alpha) / (4.0 / 3.0 * 1.0e7 / 0.91 * std::sqrt(kRadius)), 2.0 / 3.0);
   DemSolver solver(store, domain, config, gravity,
-                   Grains{{Vec3(0.0, kRadius - rest, 0.0)}, {kRadius}, {0}, {}, {}});
+                   Grains{{Vec3(0.0, kRadius - rest, 0.0)}, {kRadius}, {0}, {}, {}, {}});
   double travelled = 0.0;
   const double dt = solver.stable_dt();
   for (double t = 0.0; t < duration; t += dt) {
@@ -147,7 +148,7 @@ TEST(DemSolver, GrainCoRotatingWithTheDrumStaysWithIt) {
   ParticleStore store;
   const double centre = drum_radius - kRadius;
   DemSolver solver(store, domain, config, Vec3::Zero(),
-                   Grains{{Vec3(0.0, -centre, 0.0)}, {kRadius}, {0}, {}, {}});
+                   Grains{{Vec3(0.0, -centre, 0.0)}, {kRadius}, {0}, {}, {}, {}});
   const double omega = 30.0 * 2.0 * std::numbers::pi / 60.0;
   store.velocity()[0] = Vec3(omega * centre, 0.0, 0.0);
   store.find_vector("angular_velocity")->values[0] = omega * Vec3::UnitZ();
