@@ -16,6 +16,10 @@ class Superquadric {
   Vec3 gradient(const Vec3& x) const;
   Mat3 hessian(const Vec3& x) const;
 
+  const Vec3& half_axes() const { return axes_; }
+  double n1() const { return n1_; }
+  double n2() const { return n2_; }
+
   double volume() const { return volume_; }
   // Principal moments of inertia per unit density, about the body axes x, y, z.
   const Vec3& unit_inertia() const { return unit_inertia_; }
