@@ -35,7 +35,7 @@ awk -v n=360 -v r=0.1 -v l=0.05 'BEGIN {
   }
   print "endsolid drum" }' > "$work/drum.stl"
 
-settle_steps=8667   # 0.3 s
+settle_steps=${SETTLE_STEPS:-8667}   # 0.3 s
 timed_steps=${TIMED_STEPS:-3000}
 skin=${SKIN:-0.001}
 
@@ -49,7 +49,7 @@ liggghts_rate() {
   (cd "$work" && mpirun --allow-run-as-root --oversubscribe -np "$ranks" liggghts \
      -in "$here/liggghts/drum_seed.in" -log none -screen "$screen" -var stl "$work/drum.stl" \
      -var skin "$skin" -var settle_steps "$settle_steps" -var timed_steps "$timed_steps" \
-     >/dev/null)
+     </dev/null >/dev/null)
   loop_rate "$screen"
 }
 
@@ -57,7 +57,7 @@ partimix_rates() {
   "$bench" --benchmark_filter='^drum_10k/' --benchmark_format=json 2>/dev/null |
     /usr/bin/python3 -c 'import json, sys
 for b in json.load(sys.stdin)["benchmarks"]:
-    print(f"{b[\"particle_steps_per_s\"]:.4g}")'
+    print("%.4g" % b["particle_steps_per_s"])'
 }
 
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)"

@@ -155,8 +155,32 @@ void refuse_old_wall_keys(Reader& section) {
   }
 }
 
+// The fill's grain size: `radius` (and `radius_max`) for spheres; for superquadrics their
+// bounding spheres, inserted without overlap (both species of one shape, as the split after
+// settling may turn a grain of one into the other).
+void read_fill_size(Reader& fill, const std::vector<Species>& species, InsertionRequest& request) {
+  if (const auto& shape = species.front().shape) {
+    for (const Species& other : species) {
+      if (!other.shape || other.shape->half_axes() != shape->half_axes() ||
+          other.shape->n1() != shape->n1() || other.shape->n2() != shape->n2())
+        throw fill.error("split", "a fill of superquadrics needs both species of one shape");
+    }
+    if (fill.contains("radius") || fill.contains("radius_max"))
+      throw fill.error("radius", "superquadric grains take their size from species[].shape");
+    request.radius_min = request.radius_max = shape->bounding_radius();
+    request.shape = shape;
+    return;
+  }
+  if (species.back().shape)
+    throw fill.error("split", "a fill of spheres needs both species to be spheres");
+  request.radius_min = fill.required<double>("radius", kPositive);
+  request.radius_max = fill.optional<double>("radius_max", request.radius_min, kPositive);
+  if (request.radius_max < request.radius_min)
+    throw fill.error("radius_max", "must be at least radius");
+}
+
 GrainFill read_fill(Reader& section, const std::filesystem::path& folder,
-                    const io::SizeLimits& limits) {
+                    const io::SizeLimits& limits, const std::vector<Species>& species) {
   Reader fill = section.map("fill");
   GrainFill result;
   Reader region = fill.map("region");
@@ -169,10 +193,7 @@ GrainFill read_fill(Reader& section, const std::filesystem::path& folder,
                                           "raise the limit if the run is meant to be this big",
                                           request.count, limits.particles));
   }
-  request.radius_min = fill.required<double>("radius", kPositive);
-  request.radius_max = fill.optional<double>("radius_max", request.radius_min, kPositive);
-  if (request.radius_max < request.radius_min)
-    throw fill.error("radius_max", "must be at least radius");
+  read_fill_size(fill, species, request);
   request.seed = static_cast<std::uint32_t>(fill.optional<int>("seed", 1, at_least(0)));
   result.settle_energy = fill.optional<double>("settle_energy", result.settle_energy, kPositive);
   result.settle_time = fill.optional<double>("settle_time", result.settle_time, kNonNegative);
@@ -199,7 +220,7 @@ void read_grains(Reader& section, const io::Case& the_case, DemSection& spec) {
                         "grains_file (a CSV file)");
   }
   if (given[0] == "fill") {
-    spec.fill = read_fill(section, folder, the_case.limits);
+    spec.fill = read_fill(section, folder, the_case.limits, spec.config.species);
   } else if (given[0] == "grains") {
     spec.grains = read_grain_list(section, spec.config.species, the_case.limits);
   } else {

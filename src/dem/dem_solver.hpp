@@ -1,10 +1,12 @@
 #pragma once
-// DEM for spheres (docs/dem.md): Hertz-Mindlin (or linear) contacts with history, rolling
-// resistance, moving walls, periodic axes, velocity Verlet at a fraction of the Rayleigh time.
+// DEM for spheres and superquadrics (docs/dem.md): Hertz-Mindlin (or linear) contacts with
+// history, rolling resistance, moving walls, periodic axes, velocity Verlet at a fraction of the
+// Rayleigh time; superquadric grains turn as rigid bodies with three principal moments.
 // Each pair of grains is evaluated once from a neighbour list with a skin; each grain then
 // gathers its pairs' loads in a fixed order (DESIGN.md, "Data and speed"), so the result does
 // not depend on the thread count.
 #include <memory>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -12,6 +14,7 @@
 #include "dem/contact_history.hpp"
 #include "dem/normal_contact.hpp"
 #include "dem/pair_list.hpp"
+#include "dem/rigid_rotation.hpp"
 #include "dem/rolling_resistance.hpp"
 #include "geometry/motion.hpp"
 #include "particles/cell_grid.hpp"
@@ -57,20 +60,47 @@ class DemSolver final : public Solver {
     std::unique_ptr<geometry::Motion> motion;
     geometry::RigidPose pose;
   };
-  struct Contact;
+  // One contact as particle i sees it: unit normal n from the partner to i, overlap, the
+  // relative velocity of the contact point, and the pair's properties.
+  struct Contact {
+    Vec3 normal = Vec3::Zero();
+    double overlap = 0.0;
+    Vec3 contact_velocity = Vec3::Zero();
+    Vec3 relative_angular_velocity = Vec3::Zero();
+    PairProperties pair;
+    const Interaction* interaction = nullptr;
+    double rolling_inertia = 0.0;
+  };
+  // The load of one contact on particle i: the force, its tangential part and the rolling
+  // torque (for the torques about each centre).
+  struct ContactLoad {
+    Vec3 force;
+    Vec3 tangential;
+    Vec3 rolling;
+  };
 
   void add_fields(const Grains& grains);
+  void assign_mass(std::size_t i);
   void make_walls();
   void compute_time_step();
   void half_kick(double dt);
   void drift(double dt);
   void sort_by_cell();
   void compute_loads(double dt);
-  void pair_loads(std::size_t k, double dt);
-  bool wall_loads(std::size_t i, double dt);
-  // The load of one contact on particle i: the force, and the tangential force and rolling
-  // torque (for the torques about each centre).
-  struct ContactLoad;
+  // The loads of pair k (and of grain i's walls); the number of contact detections that missed
+  // their tolerance (superquadrics, dem_solver_superquadrics.cpp).
+  int pair_loads(std::size_t k, double dt);
+  int shaped_pair_loads(std::size_t k, const Vec3& rij, double dt);
+  bool wall_loads(std::size_t i, double dt, int& failures);
+  // Grain i against wall w: the normal, overlap, velocity of the contact point and the arm from
+  // the centre to it; false when they are apart.
+  bool sphere_wall_contact(std::size_t i, std::size_t w, Contact& c, Vec3& arm) const;
+  bool shaped_wall_contact(std::size_t i, std::size_t w, Contact& c, Vec3& arm,
+                           int& failures) const;
+  // The radius of the Hertz law: the grain's, or its shape's volume-equivalent radius.
+  double hertz_radius(std::size_t i) const;
+  Quaternion orientation(std::size_t i) const;
+  void set_orientation(std::size_t i, const Quaternion& q);
   ContactLoad load_of(const Contact& contact, Vec3& spring, Vec3& rolling_spring, double dt) const;
 
   ParticleStore& store_;
@@ -89,6 +119,12 @@ class DemSolver final : public Solver {
   std::vector<Vec3>* torque_ = nullptr;
   std::vector<double>* orientation_w_ = nullptr;
   std::vector<Vec3>* orientation_v_ = nullptr;
+  // Per species: its shape (null: spheres) and the rotor of its principal moments.
+  std::vector<const Superquadric*> shapes_;
+  std::vector<std::optional<RigidRotor>> rotors_;
+  std::vector<Vec3>* angular_momentum_ = nullptr;  // world frame; with superquadrics only
+  std::int64_t contact_failures_ =
+      0;  // contact detections that missed their tolerance, in all steps
   std::unique_ptr<CellGrid> grid_;
   std::unique_ptr<PairList> pairs_;
   std::unique_ptr<ContactHistory> wall_history_;

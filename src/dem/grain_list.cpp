@@ -143,6 +143,11 @@ class GrainFile {
       }
       s = *found;
     }
+    if (species_[s].shape) {
+      throw error(0, fmt::format("species {}: superquadric grains are placed by fill or by the "
+                                 "grains list, not from a CSV file (yet)",
+                                 species_[s].name));
+    }
     add_grain(grains, Vec3(number(cells, "x"), number(cells, "y"), number(cells, "z")), radius,
               Vec3(number(cells, "vx"), number(cells, "vy"), number(cells, "vz")),
               Vec3(number(cells, "wx"), number(cells, "wy"), number(cells, "wz")), s);
@@ -170,12 +175,17 @@ Grains read_grain_list(io::Reader& dem, const std::vector<Species>& species,
   }
   for (io::Reader& item : items) {
     const Vec3 x = item.vector("position", 3);
-    const double r = item.required<double>("radius", kPositive);
+    const std::string name = item.choice("species", names.front(), names);
+    const int s = *species_of(name, species);
+    const bool shaped = species[s].shape.has_value();
+    if (shaped && item.contains("radius"))
+      throw item.error("radius", "a superquadric takes its size from species[].shape");
+    const double r =
+        shaped ? species[s].shape->bounding_radius() : item.required<double>("radius", kPositive);
     const Vec3 v = item.vector("velocity", 3, Vec3::Zero());
     const Vec3 w = item.vector("angular_velocity", 3, Vec3::Zero());
-    const std::string name = item.choice("species", names.front(), names);
     item.done();
-    add_grain(grains, x, r, v, w, *species_of(name, species));
+    add_grain(grains, x, r, v, w, s);
   }
   return grains;
 }

@@ -9,6 +9,8 @@
 
 #include <fmt/format.h>
 
+#include "dem/superquadric_contact.hpp"
+
 namespace partimix::dem {
 
 namespace {
@@ -19,7 +21,9 @@ class PlacedSpheres {
  public:
   explicit PlacedSpheres(double cell) : cell_(cell) {}
 
-  bool overlaps(const Vec3& x, double radius, const Grains& grains) const {
+  // Whether a sphere at x overlaps a placed one that `touches(j)` confirms.
+  template <class Touches>
+  bool overlaps(const Vec3& x, double radius, const Grains& grains, Touches&& touches) const {
     const auto c = cell_of(x);
     for (long dx = -1; dx <= 1; ++dx)
       for (long dy = -1; dy <= 1; ++dy)
@@ -29,7 +33,7 @@ class PlacedSpheres {
             continue;
           for (const std::size_t j : found->second) {
             const double reach = radius + grains.radius[j];
-            if ((grains.position[j] - x).squaredNorm() < reach * reach)
+            if ((grains.position[j] - x).squaredNorm() < reach * reach && touches(j))
               return true;
           }
         }
@@ -55,14 +59,45 @@ class PlacedSpheres {
   std::unordered_map<std::uint64_t, std::vector<std::size_t>> cells_;
 };
 
+// A rotation uniform over all rotations: a normalised Gaussian 4-vector as a quaternion.
+Eigen::Quaterniond random_turn(std::mt19937_64& random) {
+  std::normal_distribution<double> normal(0.0, 1.0);
+  const Eigen::Vector4d q(normal(random), normal(random), normal(random), normal(random));
+  return Eigen::Quaterniond(q.normalized());
+}
+
+// Whether a candidate lies inside the region: a sphere wholly; a superquadric by its farthest
+// points along the six axes and along the region's outward normal nearest to its centre
+// (exact for boxes, cylinders and spheres at the grains' scale).
+bool inside(const geometry::Shape& region, const Vec3& x, double radius,
+            const std::optional<Superquadric>& shape, const Mat3& turn) {
+  if (!shape)
+    return region.signed_distance(x) <= -radius;
+  const double h = 1e-3 * radius;
+  Vec3 outward;
+  for (int k = 0; k < 3; ++k) {
+    outward[k] = region.signed_distance(x + h * Vec3::Unit(k)) -
+                 region.signed_distance(x - h * Vec3::Unit(k));
+  }
+  for (const Vec3& d : {Vec3(Vec3::UnitX()), Vec3(-Vec3::UnitX()), Vec3(Vec3::UnitY()),
+                        Vec3(-Vec3::UnitY()), Vec3(Vec3::UnitZ()), Vec3(-Vec3::UnitZ()), outward}) {
+    if (d.squaredNorm() > 0.0 &&
+        region.signed_distance(x + turn * shape->support(turn.transpose() * d)) > 0.0)
+      return false;
+  }
+  return true;
+}
+
 // Refuses a count whose spheres, at the smallest radius, could not fit in the region's bounding
 // box even at the densest packing of equal spheres (pi / sqrt(18)): no candidate is drawn then.
 void check_capacity(const geometry::Shape& region, const InsertionRequest& request) {
   const Vec3 size = region.upper() - region.lower();
   const double box = size.x() * size.y() * size.z();
-  const double spheres =
-      request.count * 4.0 / 3.0 * std::numbers::pi * std::pow(request.radius_min, 3);
-  const double densest = std::numbers::pi / std::sqrt(18.0);
+  const double each = request.shape
+                          ? request.shape->volume()
+                          : 4.0 / 3.0 * std::numbers::pi * std::pow(request.radius_min, 3);
+  const double spheres = request.count * each;
+  const double densest = request.shape ? 1.0 : std::numbers::pi / std::sqrt(18.0);
   if (std::isfinite(box) && spheres > densest * box) {
     throw std::runtime_error(fmt::format(
         "{} spheres of radius {:.3g} m take {:.3g} m^3, more than the region's bounding box "
@@ -89,7 +124,19 @@ Grains insert_random(const geometry::Shape& region, const InsertionRequest& requ
     const double radius =
         request.radius_min + (request.radius_max - request.radius_min) * unit(random);
     const Vec3 x = lo + Vec3(unit(random), unit(random), unit(random)).cwiseProduct(size);
-    if (region.signed_distance(x) > -radius || placed.overlaps(x, radius, grains)) {
+    const Eigen::Quaterniond turn = request.shape ? random_turn(random) : Eigen::Quaterniond();
+    // Shapes touch when the midway point says so (or it cannot say: refused to be safe).
+    auto touches = [&](std::size_t j) {
+      if (!request.shape)
+        return true;
+      const SuperquadricContact contact = find_contact(
+          {&*request.shape, x, turn.toRotationMatrix()},
+          {&*request.shape, grains.position[j], grains.orientation[j].toRotationMatrix()},
+          std::nullopt);
+      return contact.touching || !contact.converged;
+    };
+    if (!inside(region, x, radius, request.shape, turn.toRotationMatrix()) ||
+        placed.overlaps(x, radius, grains, touches)) {
       ++failures;
       continue;
     }
@@ -98,6 +145,8 @@ Grains insert_random(const geometry::Shape& region, const InsertionRequest& requ
     grains.position.push_back(x);
     grains.radius.push_back(radius);
     grains.species.push_back(request.species);
+    if (request.shape)
+      grains.orientation.push_back(turn);
   }
   if (static_cast<int>(grains.position.size()) < request.count) {
     throw std::runtime_error(fmt::format(

@@ -2,9 +2,14 @@
 // Random insertion of spheres without overlap into a region (docs/dem.md, "Filling"): random
 // sequential addition, each candidate centre drawn uniformly inside the region at least its
 // radius from the region's surface and kept when it overlaps no sphere placed before.
+// Superquadrics get a random orientation (uniform over all rotations) each, their bounding
+// spheres stay inside the region, and a candidate is refused only when its shape touches a
+// placed grain's (the midway point, dem/superquadric_contact.hpp).
 #include <cstdint>
+#include <optional>
 
 #include "dem/config.hpp"
+#include "dem/superquadric.hpp"
 #include "geometry/shape.hpp"
 
 namespace partimix::dem {
@@ -16,6 +21,7 @@ struct InsertionRequest {
   std::uint32_t seed = 1;
   int species = 0;
   int attempts_per_sphere = 1000;  // gives up (throws) after this many failed candidates in a row
+  std::optional<Superquadric> shape;  // superquadrics (radius: its bounding radius); none: spheres
 };
 
 // Throws std::runtime_error naming how many spheres fitted when the region is too full, at once

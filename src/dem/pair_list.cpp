@@ -8,6 +8,17 @@
 #include "core/error.hpp"
 
 namespace partimix::dem {
+namespace {
+
+constexpr std::size_t kColumns = 10;  // a checkpoint's history of one pair: PairHistory
+
+// The history as grain j sees it: the springs with the sign changed; the midway point, kept
+// from grain i's centre, is dropped (the next detection starts cold).
+PairHistory seen_from_j(const PairHistory& h) {
+  return {-h.spring, -h.rolling_spring, Vec3::Zero(), 0.0};
+}
+
+}  // namespace
 
 bool PairList::stale(std::span<const Vec3> positions, const Domain& domain) const {
   if (built_at_.size() != positions.size())
@@ -94,8 +105,8 @@ std::int64_t PairList::find(std::uint32_t a, std::uint32_t b, bool& flipped) con
   return at != end && *at == high ? at - second_.begin() : -1;
 }
 
-// A pair that touched at the last build keeps its springs, turned to the new order of its
-// grains (the springs of grain j are those of grain i with the sign changed).
+// A pair that touched at the last build keeps its history, turned to the new order of its
+// grains.
 void PairList::carry_history(std::span<const std::uint32_t> new_to_old) {
   if (old_start_.empty())
     return;
@@ -113,8 +124,7 @@ void PairList::carry_history(std::span<const std::uint32_t> new_to_old) {
     if (k < 0)
       continue;
     const PairHistory& old = old_history_[old_pair];
-    const double sign = flipped ? -1.0 : 1.0;
-    history_[k] = {sign * old.spring, sign * old.rolling_spring};
+    history_[k] = flipped ? seen_from_j(old) : old;
     touching_[k] = 1;
   }
 }
@@ -160,18 +170,19 @@ void PairList::save(StateArchive& archive, const std::string& prefix,
     pairs.insert(pairs.end(), {ids[first_[k]], ids[second_[k]]});
     const PairHistory& h = history_[k];
     springs.insert(springs.end(), {h.spring.x(), h.spring.y(), h.spring.z(), h.rolling_spring.x(),
-                                   h.rolling_spring.y(), h.rolling_spring.z()});
+                                   h.rolling_spring.y(), h.rolling_spring.z(), h.midway.x(),
+                                   h.midway.y(), h.midway.z(), h.mu});
   }
   archive.put_integers(prefix + "pairs", pairs, 2);
-  archive.put_doubles(prefix + "springs", springs, 6);
+  archive.put_doubles(prefix + "springs", springs, kColumns);
 }
 
 void PairList::restore(const StateArchive& archive, const std::string& prefix, const CellGrid& grid,
                        std::span<const Vec3> positions, std::span<const double> radius,
                        std::span<const std::int64_t> ids) {
   const auto pairs = archive.integers(prefix + "pairs", 2);
-  const auto springs = archive.doubles(prefix + "springs", 6);
-  if (pairs.size() / 2 != springs.size() / 6)
+  const auto springs = archive.doubles(prefix + "springs", kColumns);
+  if (pairs.size() / 2 != springs.size() / kColumns)
     throw StateError(prefix + ": the pairs and their springs differ in number");
   start_.clear();  // nothing to carry over
   build(grid, positions, radius);
@@ -191,9 +202,10 @@ void PairList::restore(const StateArchive& archive, const std::string& prefix, c
                       "not neighbours here",
                       prefix, pairs[2 * p], pairs[2 * p + 1]));
     }
-    const double sign = flipped ? -1.0 : 1.0;
-    const double* s = &springs[6 * p];
-    history_[k] = {sign * Vec3(s[0], s[1], s[2]), sign * Vec3(s[3], s[4], s[5])};
+    const double* s = &springs[kColumns * p];
+    const PairHistory saved{Vec3(s[0], s[1], s[2]), Vec3(s[3], s[4], s[5]), Vec3(s[6], s[7], s[8]),
+                            s[9]};
+    history_[k] = flipped ? seen_from_j(saved) : saved;
     touching_[k] = 1;
   }
 }

@@ -21,6 +21,10 @@ namespace partimix::dem {
 struct PairHistory {
   Vec3 spring = Vec3::Zero();          // xi of grain i [m]
   Vec3 rolling_spring = Vec3::Zero();  // M_r^k on grain i [N m]
+  // Superquadrics: the last midway point less grain i's centre, and its multiplier mu; mu = 0:
+  // none (the next contact detection starts cold).
+  Vec3 midway = Vec3::Zero();
+  double mu = 0.0;
 };
 
 // What a pair's contact does to its grains: the force on i (j gets its opposite) and the torque
@@ -62,7 +66,7 @@ class PairList {
   // Touching pairs of grain i.
   int contacts(std::size_t i) const;
 
-  // The touching pairs (the ids of both grains and the springs) for a checkpoint. restore()
+  // The touching pairs (the ids of both grains and their histories) for a checkpoint. restore()
   // builds the list and gives the saved springs back to the pairs of the same ids; it throws
   // StateError when a saved pair is not one of this list's (the grains are not where the
   // checkpoint had them) or the entries are malformed.

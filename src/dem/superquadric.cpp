@@ -24,7 +24,7 @@ Power power(double t, double n) {
 }
 
 // The powers of the scaled coordinates, and s = |x/a|^n2 + |y/b|^n2 with the derivatives of
-// s^(n1/n2) with respect to s (zero on the z axis, where s = 0).
+// s^(n1/n2) with respect to s (on the z axis, where s = 0: their limits for n1 = n2, else zero).
 struct Terms {
   Power x, y, z;
   double ds = 0.0;
@@ -38,6 +38,8 @@ Terms terms(const Vec3& x, const Vec3& axes, double n1, double n2) {
   if (s > 0.0) {
     t.ds = p * std::pow(s, p - 1.0);
     t.dds = p * (p - 1.0) * std::pow(s, p - 2.0);
+  } else if (p == 1.0) {  // s^1 on the z axis too (an ellipsoid's curvature there)
+    t.ds = 1.0;
   }
   return t;
 }

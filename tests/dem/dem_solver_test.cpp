@@ -13,6 +13,7 @@
 //   right sign and size, so the tangential force stays near zero and after a tenth of a
 //   revolution the grain's angle about the axis matches the drum's within 1e-4 rad (measured
 //   3.9e-6; with the wall velocity's sign flipped it is 0.125 rad off).
+// - A superquadric with a = b = c and n1 = n2 = 2 does all of the above as the sphere, to 1e-9.
 // - Energy: 125 spheres in a closed box of six planes, e = 1, no friction, no gravity: kinetic
 //   plus elastic contact energy after 2000 steps at the default step within 2e-3 of the start
 //   (measured -6.7e-4).
@@ -20,8 +21,11 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <random>
+#include <utility>
 
+#include "dem/dem_setups.hpp"
 #include "dem/dem_solver.hpp"
 #include "geometry/drum_surface.hpp"
 #include "geometry/plane_surface.hpp"
@@ -29,32 +33,26 @@
 namespace partimix::dem {
 namespace {
 
+using test::add_plane;
+using test::box;
+
 constexpr double kRadius = 0.002;
 constexpr double kDensity = 2500.0;
 
-Config one_species(double restitution, double friction) {
+// One species of spheres, or (shape) of superquadrics.
+Config one_species(double restitution, double friction,
+                   const std::optional<Superquadric>& shape = std::nullopt) {
   Config config;
-  config.species = {Species{"grain", kDensity, {1.0e7, 0.3}, std::nullopt}};
+  config.species = {Species{"grain", kDensity, {1.0e7, 0.3}, shape}};
   config.particle_interactions = {Interaction{restitution, friction, 0.0}};
   config.wall_interactions = {Interaction{restitution, friction, 0.0}};
   return config;
 }
 
-void add_plane(Config& config, const Vec3& point, const Vec3& normal) {
-  config.walls.push_back(
-      {std::make_shared<geometry::PlaneSurface>(point, normal), {}, {2.0e11, 0.3}, {}});
-}
-
-Domain box(double half) {
-  Domain domain;
-  domain.lo = Vec3::Constant(-half);
-  domain.hi = Vec3::Constant(half);
-  return domain;
-}
-
 // Rebound speed of a sphere thrown at 1 m/s onto the plane y = 0 with steps dt (0: the solver's).
-double rebound_speed(double restitution, double dt_fraction_of_rayleigh) {
-  Config config = one_species(restitution, 0.0);
+double rebound_speed(double restitution, double dt_fraction_of_rayleigh,
+                     const std::optional<Superquadric>& shape = std::nullopt) {
+  Config config = one_species(restitution, 0.0, shape);
   add_plane(config, Vec3::Zero(), Vec3::UnitY());
   ParticleStore store;
   DemSolver solver(store, box(0.05), config, Vec3::Zero(),
@@ -75,10 +73,12 @@ TEST(DemSolver, SphereOnPlaneReboundsAtTheRestitution) {
   }
 }
 
-TEST(DemSolver, HeadOnPairConservesMomentumAndReboundsAtTheRestitution) {
-  constexpr double kRestitution = 0.6;
+constexpr double kRestitution = 0.6;
+
+// Two grains meeting head on at 1 m/s: their momentum and rebound speed after the contact.
+std::pair<Vec3, double> head_on(const std::optional<Superquadric>& shape = std::nullopt) {
   ParticleStore store;
-  DemSolver solver(store, box(0.05), one_species(kRestitution, 0.3), Vec3::Zero(),
+  DemSolver solver(store, box(0.05), one_species(kRestitution, 0.3, shape), Vec3::Zero(),
                    Grains{{Vec3(-1.01 * kRadius, 0.0, 0.0), Vec3(1.01 * kRadius, 0.0, 0.0)},
                           {kRadius, kRadius},
                           {0, 0},
@@ -91,14 +91,20 @@ TEST(DemSolver, HeadOnPairConservesMomentumAndReboundsAtTheRestitution) {
   const double dt = 0.01 * solver.derived_parameters()["rayleigh_time [s]"];
   for (int n = 0; n < 20000; ++n)
     solver.step(dt);
-  const Vec3 momentum = store.velocity()[0] + store.velocity()[1];
+  return {store.velocity()[0] + store.velocity()[1],
+          store.velocity()[1 - left].x() - store.velocity()[left].x()};
+}
+
+TEST(DemSolver, HeadOnPairConservesMomentumAndReboundsAtTheRestitution) {
+  const auto [momentum, rebound] = head_on();
   EXPECT_LT(momentum.norm(), 1e-12);
-  EXPECT_NEAR(store.velocity()[1 - left].x() - store.velocity()[left].x(), kRestitution, 1e-3);
+  EXPECT_NEAR(rebound, kRestitution, 1e-3);
 }
 
 // Distance along the incline after `duration` from rest, gravity tilted by alpha.
-double incline_distance(double alpha, double friction, double duration) {
-  Config config = one_species(0.3, friction);
+double incline_distance(double alpha, double friction, double duration,
+                        const std::optional<Superquadric>& shape = std::nullopt) {
+  Config config = one_species(0.3, friction, shape);
   config.sort_interval = 1;
   add_plane(config, Vec3::Zero(), Vec3::UnitY());
   const double g = 9.81;
@@ -130,6 +136,24 @@ TEST(DemSolver, SphereRollsOrSlidesDownAnInclineAsTheRigidBodyTheorySays) {
   const double sliding =
       0.5 * g * (std::sin(alpha) - friction * std::cos(alpha)) * duration * duration;
   EXPECT_NEAR(incline_distance(alpha, friction, duration), sliding, 2e-3 * sliding);
+}
+
+// A superquadric with a = b = c and n1 = n2 = 2 is the sphere: the midway point, the wall's
+// support point and the rotor of three equal moments give the spheres' results to the Newton
+// tolerance (rebound on a plane, a head-on pair, rolling and sliding down an incline).
+TEST(DemSolver, SphereShapedSuperquadricsMoveAsTheSpheres) {
+  const Superquadric sphere(Vec3::Constant(kRadius), 2.0, 2.0);
+  for (const double e : {0.3, 0.9})
+    EXPECT_NEAR(rebound_speed(e, 0.01, sphere), rebound_speed(e, 0.01), 1e-9) << "e = " << e;
+  const auto [momentum, rebound] = head_on(sphere);
+  EXPECT_LT(momentum.norm(), 1e-12);
+  EXPECT_NEAR(rebound, head_on().second, 1e-9);
+  const double alpha = 30.0 * std::numbers::pi / 180.0;
+  for (const double friction : {0.5, 0.1}) {
+    const double expected = incline_distance(alpha, friction, 0.2);
+    EXPECT_NEAR(incline_distance(alpha, friction, 0.2, sphere), expected, 1e-9 * expected)
+        << "friction " << friction;
+  }
 }
 
 TEST(DemSolver, GrainCoRotatingWithTheDrumStaysWithIt) {

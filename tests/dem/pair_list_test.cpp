@@ -1,7 +1,7 @@
 // The DEM's half neighbour list with a skin (docs/dem.md, "The solver"): it lists exactly the
 // pairs within R_i + R_j + skin (against all pairs), goes stale only when a grain has moved half
-// the skin, carries the springs of touching pairs through a re-sort (sign changed when a pair's
-// order flips), and gathers each grain's loads.
+// the skin, carries the springs of touching pairs through a re-sort (sign changed and the
+// superquadric warm start dropped when a pair's order flips), and gathers each grain's loads.
 #include <algorithm>
 #include <numeric>
 #include <random>
@@ -102,7 +102,13 @@ TEST(PairList, SpringsFollowTheirGrainsThroughAReSortAndFlipWithThePair) {
   const std::uint32_t b = list.second(5);
   list.history(5).spring = Vec3(1, 2, 3);
   list.history(5).rolling_spring = Vec3(4, 5, 6);
+  list.history(5).midway = Vec3(1e-4, 0, 0);
+  list.history(5).mu = 0.9;
   list.set_touching(5, true);
+  // Rebuilt in place: the whole history stays, the midway point included.
+  list.build(listed_bed.grid, bed.x, bed.radius);
+  EXPECT_EQ(list.history(5).midway, Vec3(1e-4, 0, 0));
+  EXPECT_EQ(list.history(5).mu, 0.9);
   list.history(6).spring = Vec3(7, 8, 9);  // not touching: not carried
   // Reverse the grains: new grain k is old grain n - 1 - k, so every pair's order flips.
   const std::size_t n = bed.x.size();
@@ -121,6 +127,7 @@ TEST(PairList, SpringsFollowTheirGrainsThroughAReSortAndFlipWithThePair) {
     if (list.first(k) == n - 1 - b && list.second(k) == n - 1 - a) {
       EXPECT_EQ(list.history(k).spring, Vec3(-1, -2, -3));
       EXPECT_EQ(list.history(k).rolling_spring, Vec3(-4, -5, -6));
+      EXPECT_EQ(list.history(k).mu, 0.0);  // kept from the other grain's centre: dropped
       EXPECT_TRUE(list.touching(k));
       ++carried;
     } else {

@@ -30,6 +30,10 @@ TEST(Superquadric, EllipsoidVolumeAndInertiaHaveTheirClosedForms) {
   EXPECT_DOUBLE_EQ(ellipsoid.bounding_radius(), 3.0e-3);
   EXPECT_NEAR(ellipsoid.value(Vec3(0, 0, 3.0e-3)), 0.0, 1e-12);
   EXPECT_NEAR(ellipsoid.value(Vec3::Zero()), -1.0, 1e-15);
+  // On the z axis the Hessian is diag(2/a^2, 2/b^2, 2/c^2) too.
+  const Mat3 h = ellipsoid.hessian(Vec3(0, 0, 1.0e-3));
+  for (int k = 0; k < 3; ++k)
+    EXPECT_NEAR(h(k, k), 2.0 / (axes[k] * axes[k]), 1e-9 / (axes[k] * axes[k]));
 }
 
 TEST(Superquadric, SphereIsTheEllipsoidWithEqualAxes) {

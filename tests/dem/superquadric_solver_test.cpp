@@ -1,0 +1,151 @@
+// Superquadric grains in the DEM solver (docs/dem.md, "Superquadric grains"):
+// - A prolate ellipsoid (1.5 x 1.5 x 3 mm) tilted 30 degrees and dropped at 1 m/s onto a plane,
+//   e = 1, no friction: its velocity and spin after the contact against the rigid-body impulse
+//   solution, J = 2 |u_n| / (1/m + (r x n) . I^-1 (r x n)) at the lowest point r. The contact
+//   lasts a few microseconds, during which the grain turns a little, so the impulse solution is
+//   met to within 1% (of the impact speed for the velocity, which the impulse nearly cancels
+//   here, and of the spin; measured 0.13% and below 1%); the kinetic energy within 1e-4
+//   (measured 1.4e-5).
+// - A gas of 27 frictionless elastic ellipsoids (sigma = 2) in a closed box, turning and
+//   colliding: kinetic energy (with the full inertia tensor) whenever no grain touches anything,
+//   within 1e-2 of the start over 3000 steps (measured 3.8e-3), and no contact detection
+//   failures. The error does not shrink with the step (3.1e-3 at dt/2, 4.2e-3 at dt/4): the
+//   midway point's normal and contact point are not the gradient of a potential, so the elastic
+//   contact of two non-spheres is not exactly conservative (a model error, not the integrator's).
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "dem/dem_setups.hpp"
+#include "dem/dem_solver.hpp"
+#include "geometry/plane_surface.hpp"
+
+namespace partimix::dem {
+namespace {
+
+using test::add_plane;
+using test::box;
+
+constexpr double kDensity = 2500.0;
+
+Config elastic_frictionless(const Superquadric& shape, double youngs_modulus) {
+  Config config;
+  config.species = {Species{"grain", kDensity, {youngs_modulus, 0.3}, shape}};
+  config.particle_interactions = {Interaction{1.0, 0.0, 0.0}};
+  config.wall_interactions = {Interaction{1.0, 0.0, 0.0}};
+  return config;
+}
+
+// The kinetic energy of grain i, with its world inertia tensor Q I Q^T.
+double kinetic_energy(const ParticleStore& store, const Superquadric& shape, std::size_t i) {
+  const Vec3& v = store.find_vector("orientation_v")->values[i];
+  const Eigen::Quaterniond q(store.find_scalar("orientation_w")->values[i], v.x(), v.y(), v.z());
+  const Mat3 rotation = q.toRotationMatrix();
+  const Mat3 inertia =
+      rotation * (kDensity * shape.unit_inertia()).asDiagonal() * rotation.transpose();
+  const Vec3& omega = store.find_vector("angular_velocity")->values[i];
+  return 0.5 * store.mass()[i] * store.velocity()[i].squaredNorm() +
+         0.5 * omega.dot(inertia * omega);
+}
+
+TEST(SuperquadricSolver, TiltedEllipsoidReboundsAsTheRigidBodyImpulseSays) {
+  const Superquadric ellipsoid(Vec3(1.5e-3, 1.5e-3, 3.0e-3), 2.0, 2.0);
+  Config config = elastic_frictionless(ellipsoid, 1.0e9);
+  add_plane(config, Vec3::Zero(), Vec3::UnitY());
+  const Eigen::Quaterniond tilt(Eigen::AngleAxisd(std::numbers::pi / 6.0, Vec3::UnitX()));
+  const Mat3 rotation = tilt.toRotationMatrix();
+  const Vec3 lowest = rotation * ellipsoid.support(rotation.transpose() * -Vec3::UnitY());
+  Grains grains;
+  grains.position = {Vec3(0.0, -lowest.y() + 1.0e-6, 0.0)};
+  grains.radius = {0.0};
+  grains.species = {0};
+  grains.velocity = {Vec3(0.0, -1.0, 0.0)};
+  grains.angular_velocity = {Vec3::Zero()};
+  grains.orientation = {tilt};
+  ParticleStore store;
+  DemSolver solver(store, box(0.05), config, Vec3::Zero(), grains);
+  const double before = kinetic_energy(store, ellipsoid, 0);
+  const double dt = 0.05 * solver.derived_parameters()["rayleigh_time [s]"];
+  bool touched = false;
+  for (int n = 0; n < 100000 && !(touched && store.velocity()[0].y() > 0.0 &&
+                                  store.find_vector("contact_force")->values[0].isZero());
+       ++n) {
+    solver.step(dt);
+    touched = touched || !store.find_vector("contact_force")->values[0].isZero();
+  }
+  ASSERT_TRUE(touched);
+  const double mass = store.mass()[0];
+  const Mat3 inertia =
+      rotation * (kDensity * ellipsoid.unit_inertia()).asDiagonal() * rotation.transpose();
+  const Vec3 arm_cross_n = lowest.cross(Vec3::UnitY());
+  const double impulse = 2.0 / (1.0 / mass + arm_cross_n.dot(inertia.inverse() * arm_cross_n));
+  const Vec3 velocity = Vec3(0.0, -1.0, 0.0) + impulse / mass * Vec3::UnitY();
+  const Vec3 spin = inertia.inverse() * arm_cross_n * impulse;
+  const Vec3& omega = store.find_vector("angular_velocity")->values[0];
+  RecordProperty("rebound_velocity_y", std::to_string(store.velocity()[0].y()));
+  RecordProperty("impulse_velocity_y", std::to_string(velocity.y()));
+  RecordProperty("spin_x", std::to_string(omega.x()));
+  RecordProperty("impulse_spin_x", std::to_string(spin.x()));
+  EXPECT_LT((store.velocity()[0] - velocity).norm(), 0.01 * 1.0);
+  EXPECT_LT((omega - spin).norm(), 0.01 * spin.norm());
+  EXPECT_NEAR(kinetic_energy(store, ellipsoid, 0), before, 1e-4 * before);
+  EXPECT_EQ(solver.derived_parameters()["contact_detection_failures [-]"], 0.0);
+}
+
+TEST(SuperquadricSolver, ElasticFrictionlessEllipsoidsInABoxKeepTheirEnergy) {
+  const double a = 0.002 / std::cbrt(2.0);  // sigma = 2, the volume of a sphere of 2 mm
+  const Superquadric ellipsoid(Vec3(a, a, 2.0 * a), 2.0, 2.0);
+  Config config = elastic_frictionless(ellipsoid, 1.0e7);
+  const double half = 0.015;
+  for (int axis = 0; axis < 3; ++axis) {
+    add_plane(config, -half * Vec3::Unit(axis), Vec3::Unit(axis));
+    add_plane(config, half * Vec3::Unit(axis), -Vec3::Unit(axis));
+  }
+  Grains grains;
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int k = 0; k < 27; ++k) {
+    grains.position.push_back(Vec3(k % 3 - 1, k / 3 % 3 - 1, k / 9 - 1) * 0.009);
+    grains.radius.push_back(0.0);
+    grains.species.push_back(0);
+    grains.velocity.push_back(Vec3(unit(random), unit(random), unit(random)));
+    grains.angular_velocity.push_back(100.0 * Vec3(unit(random), unit(random), unit(random)));
+    grains.orientation.push_back(Eigen::Quaterniond::UnitRandom());
+  }
+  ParticleStore store;
+  DemSolver solver(store, box(1.1 * half), config, Vec3::Zero(), grains);
+  auto total_energy = [&] {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < store.size(); ++i)
+      sum += kinetic_energy(store, ellipsoid, i);
+    return sum;
+  };
+  auto apart = [&] {
+    for (const Vec3& f : store.find_vector("contact_force")->values)
+      if (!f.isZero())
+        return false;
+    return true;
+  };
+  ASSERT_TRUE(apart());
+  const double start = total_energy();
+  double worst = 0.0;
+  int samples = 0;
+  for (int n = 0; n < 3000; ++n) {
+    solver.step(solver.stable_dt());
+    if (apart()) {
+      worst = std::max(worst, std::abs(total_energy() / start - 1.0));
+      ++samples;
+    }
+  }
+  RecordProperty("worst_relative_energy_change", std::to_string(worst));
+  RecordProperty("contact_free_samples", samples);
+  EXPECT_GT(samples, 100);
+  EXPECT_LT(worst, 1e-2);
+  EXPECT_EQ(solver.derived_parameters()["contact_detection_failures [-]"], 0.0);
+}
+
+}  // namespace
+}  // namespace partimix::dem
