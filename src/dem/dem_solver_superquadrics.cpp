@@ -35,12 +35,15 @@ int DemSolver::shaped_pair_loads(std::size_t k, const Vec3& rij, double dt) {
       find_contact({&shape_of(i, sphere_i), x[i], orientation(i).toRotationMatrix()},
                    {&shape_of(j, sphere_j), centre_j, orientation(j).toRotationMatrix()}, start);
   const int failures = found.converged ? 0 : 1;
+  // The warm start of the next step: kept while Newton runs for the pair (its bounding boxes
+  // overlap), touching or not.
+  const bool solved = found.converged && found.near;
+  history.midway = solved ? Vec3(found.midway - x[i]) : Vec3::Zero();
+  history.mu = solved ? found.mu : 0.0;
   if (!found.touching) {
     pairs_->set_touching(k, false);
     return failures;
   }
-  history.midway = found.midway - x[i];
-  history.mu = found.mu;
   Contact c;
   c.normal = -found.normal;
   c.overlap = found.overlap;

@@ -116,7 +116,7 @@ void PairList::carry_history(std::span<const std::uint32_t> new_to_old) {
     old_to_new_[new_to_old.empty() ? k : new_to_old[k]] = static_cast<std::uint32_t>(k);
 #pragma omp parallel for schedule(static)
   for (std::size_t old_pair = 0; old_pair < old_first_.size(); ++old_pair) {
-    if (!old_touching_[old_pair])
+    if (!old_touching_[old_pair] && !(old_history_[old_pair].mu > 0.0))
       continue;
     bool flipped = false;
     const std::int64_t k =
@@ -125,13 +125,15 @@ void PairList::carry_history(std::span<const std::uint32_t> new_to_old) {
       continue;
     const PairHistory& old = old_history_[old_pair];
     history_[k] = flipped ? seen_from_j(old) : old;
-    touching_[k] = 1;
+    touching_[k] = old_touching_[old_pair];
   }
 }
 
 void PairList::set_touching(std::size_t k, bool touching) {
-  if (!touching && touching_[k])
-    history_[k] = PairHistory{};
+  if (!touching && touching_[k]) {
+    history_[k].spring = Vec3::Zero();
+    history_[k].rolling_spring = Vec3::Zero();
+  }
   touching_[k] = touching ? 1 : 0;
 }
 
@@ -165,7 +167,7 @@ void PairList::save(StateArchive& archive, const std::string& prefix,
   std::vector<std::int64_t> pairs;
   std::vector<double> springs;
   for (std::size_t k = 0; k < first_.size(); ++k) {
-    if (!touching_[k])
+    if (!touching_[k] && !(history_[k].mu > 0.0))
       continue;
     pairs.insert(pairs.end(), {ids[first_[k]], ids[second_[k]]});
     const PairHistory& h = history_[k];

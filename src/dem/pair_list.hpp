@@ -21,8 +21,8 @@ namespace partimix::dem {
 struct PairHistory {
   Vec3 spring = Vec3::Zero();          // xi of grain i [m]
   Vec3 rolling_spring = Vec3::Zero();  // M_r^k on grain i [N m]
-  // Superquadrics: the last midway point less grain i's centre, and its multiplier mu; mu = 0:
-  // none (the next contact detection starts cold).
+  // Superquadrics: the last midway point less grain i's centre, and its multiplier mu, kept
+  // while the pair's bounding spheres overlap; mu = 0: none (the next detection starts cold).
   Vec3 midway = Vec3::Zero();
   double mu = 0.0;
 };
@@ -57,7 +57,8 @@ class PairList {
   std::uint32_t second(std::size_t k) const { return second_[k]; }
   PairHistory& history(std::size_t k) { return history_[k]; }
   PairLoad& load(std::size_t k) { return loads_[k]; }
-  // Marks pair k touching (its load counts) or apart (its springs are cleared).
+  // Marks pair k touching (its load counts) or apart (its springs are cleared; a superquadric
+  // pair's warm start stays while the grains are near).
   void set_touching(std::size_t k, bool touching);
   bool touching(std::size_t k) const { return touching_[k] != 0; }
 
@@ -66,7 +67,8 @@ class PairList {
   // Touching pairs of grain i.
   int contacts(std::size_t i) const;
 
-  // The touching pairs (the ids of both grains and their histories) for a checkpoint. restore()
+  // The pairs with a history (touching, or near superquadrics with a warm start): the ids of
+  // both grains and their histories, for a checkpoint. restore()
   // builds the list and gives the saved springs back to the pairs of the same ids; it throws
   // StateError when a saved pair is not one of this list's (the grains are not where the
   // checkpoint had them) or the entries are malformed.

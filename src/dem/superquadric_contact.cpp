@@ -162,6 +162,7 @@ SurfaceDistance distance_to_surface(const GrainPose& g, const Vec3& x, const Vec
 SuperquadricContact contact_at(const GrainPose& i, const GrainPose& j, const Midway& m,
                                double length) {
   SuperquadricContact c;
+  c.near = true;
   c.converged = m.converged;
   c.iterations = m.iterations;
   c.midway = m.it.x;

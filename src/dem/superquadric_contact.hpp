@@ -42,6 +42,7 @@ struct SuperquadricContact {
   Vec3 midway = Vec3::Zero();  // X, world frame (for the next step's warm start)
   double mu = 1.0;             // the multiplier at X (for the warm start)
   int iterations = 0;          // Newton steps, 0 when the bounding tests reject the pair
+  bool near = false;           // the bounding tests passed: Newton ran, midway and mu hold
 };
 
 // The contact of grain i with grain j, Newton started from `start` when given (and from the
