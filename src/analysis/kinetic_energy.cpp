@@ -35,12 +35,16 @@ void KineticEnergy::sample(const ParticleStore& particles, double /*time*/,
     values[1] = std::numeric_limits<double>::quiet_NaN();
     return;
   }
+  // Grains with an angular momentum (superquadrics: the full inertia tensor) give w . L / 2;
+  // solid spheres (2/5) m r^2 w^2 / 2.
+  const Field<Vec3>* momentum = particles.find_vector("angular_momentum");
   double rotation = 0.0;
   for (std::size_t i = 0; i < particles.size(); ++i) {
-    if (particles.is_material(i)) {
-      const double r = radius->values[i];
-      rotation += 0.2 * particles.mass()[i] * r * r * omega->values[i].squaredNorm();
-    }
+    if (!particles.is_material(i))
+      continue;
+    const double r = radius->values[i];
+    rotation += momentum ? 0.5 * omega->values[i].dot(momentum->values[i])
+                         : 0.2 * particles.mass()[i] * r * r * omega->values[i].squaredNorm();
   }
   values[1] = rotation;
 }

@@ -29,6 +29,10 @@ int wall_slots(std::size_t walls) {
   return static_cast<int>(std::clamp<std::size_t>(walls, 1, ContactHistory::kMaxCapacity));
 }
 
+bool any_shaped(const std::vector<const Superquadric*>& shapes) {
+  return std::any_of(shapes.begin(), shapes.end(), [](const Superquadric* p) { return p; });
+}
+
 // The pose held still: no velocity.
 geometry::RigidPose at_rest(geometry::RigidPose pose) {
   pose.velocity = Vec3::Zero();
@@ -59,6 +63,7 @@ DemSolver::DemSolver(ParticleStore& store, const Domain& domain, const Config& c
     if (species.shape)
       rotors_.back().emplace(species.density * species.shape->unit_inertia());
   }
+  refuse_faceted_walls_for_shapes();
   add_fields(grains);
   make_walls();
   compute_time_step();
@@ -71,6 +76,21 @@ DemSolver::DemSolver(ParticleStore& store, const Domain& domain, const Config& c
   compute_loads(0.0);
 }
 
+// Superquadrics meet walls of one smooth face only, until walls of several faces give a contact
+// per face (docs/dem.md, "Walls and superquadrics").
+void DemSolver::refuse_faceted_walls_for_shapes() const {
+  if (!any_shaped(shapes_))
+    return;
+  for (std::size_t w = 0; w < config_.walls.size(); ++w) {
+    if (!config_.walls[w].surface->single_face()) {
+      throw config_error(fmt::format("walls[{}].shape", w),
+                         "superquadric grains meet plane, drum and cone walls only for now: a "
+                         "wall of several faces (box, vessel, mesh) gives one contact per wall, "
+                         "which a long grain lying in a corner defeats; build it from planes");
+    }
+  }
+}
+
 void DemSolver::add_fields(const Grains& grains) {
   radius_ = &store_.add_scalar("radius", "m").values;
   species_ = &store_.add_integer("species", "").values;
@@ -79,8 +99,7 @@ void DemSolver::add_fields(const Grains& grains) {
   torque_ = &store_.add_vector("contact_torque", "N m").values;
   orientation_w_ = &store_.add_scalar("orientation_w", "", false).values;
   orientation_v_ = &store_.add_vector("orientation_v", "", false).values;
-  const bool shaped = std::any_of(shapes_.begin(), shapes_.end(), [](auto* p) { return p; });
-  if (shaped)
+  if (any_shaped(shapes_))
     angular_momentum_ = &store_.add_vector("angular_momentum", "kg m^2/s", false).values;
   const std::size_t count = grains.position.size();
   if (count == 0)
@@ -115,6 +134,9 @@ void DemSolver::assign_mass(std::size_t i) {
       species.density * (species.shape ? species.shape->volume() : sphere_volume((*radius_)[i]));
   if (rotors_[s]) {
     (*angular_momentum_)[i] = rotors_[s]->angular_momentum(orientation(i), (*angular_velocity_)[i]);
+  } else if (angular_momentum_) {
+    (*angular_momentum_)[i] =
+        0.4 * store_.mass()[i] * (*radius_)[i] * (*radius_)[i] * (*angular_velocity_)[i];
   }
 }
 
@@ -201,6 +223,8 @@ void DemSolver::half_kick(double dt) {
     }
     const double inertia = 0.4 * m[i] * (*radius_)[i] * (*radius_)[i];
     (*angular_velocity_)[i] += 0.5 * dt / inertia * (*torque_)[i];
+    if (angular_momentum_)  // beside superquadrics, for the analyses
+      (*angular_momentum_)[i] = inertia * (*angular_velocity_)[i];
   }
 }
 

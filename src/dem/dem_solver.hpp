@@ -79,6 +79,7 @@ class DemSolver final : public Solver {
     Vec3 rolling;
   };
 
+  void refuse_faceted_walls_for_shapes() const;
   void add_fields(const Grains& grains);
   void assign_mass(std::size_t i);
   void make_walls();
@@ -122,7 +123,7 @@ class DemSolver final : public Solver {
   // Per species: its shape (null: spheres) and the rotor of its principal moments.
   std::vector<const Superquadric*> shapes_;
   std::vector<std::optional<RigidRotor>> rotors_;
-  std::vector<Vec3>* angular_momentum_ = nullptr;  // world frame; with superquadrics only
+  std::vector<Vec3>* angular_momentum_ = nullptr;  // world frame; runs with superquadrics only
   std::int64_t contact_failures_ =
       0;  // contact detections that missed their tolerance, in all steps
   std::unique_ptr<CellGrid> grid_;

@@ -27,6 +27,10 @@ class Surface {
   // surface on its material side (no contact possible), or, for some surfaces, where the
   // nearest point is not defined (said in their headers).
   virtual bool nearest(const Vec3& centre, double reach, SurfacePoint& out) const = 0;
+  // True for one smooth face (a plane, a drum shell, a cone's side), which a convex grain meets
+  // at one point at most. Surfaces of several faces (boxes, vessels, meshes) give one contact per
+  // wall, which a sphere's nearest point handles but a long grain lying in a corner defeats.
+  virtual bool single_face() const { return false; }
 };
 
 }  // namespace partimix::geometry

@@ -62,6 +62,24 @@ TEST(KineticEnergy, GrainsGetARotationalColumn) {
   EXPECT_NEAR(values[1], 0.6, kTight);
 }
 
+// Superquadric runs carry each grain's world angular momentum L: the rotational energy is then
+// w . L / 2, with the full inertia tensor (here L = diag(1, 2, 3) w per grain).
+TEST(KineticEnergy, WithAngularMomentaTheFullInertiaTensor) {
+  ParticleStore store;
+  fill(store, true, true);
+  auto& momentum = store.add_vector("angular_momentum", "kg m^2/s", false).values;
+  const auto& omega = store.find_vector("angular_velocity")->values;
+  double expected = 0.0;
+  for (std::size_t i = 0; i < store.size(); ++i) {
+    momentum[i] = Vec3(1, 2, 3).cwiseProduct(omega[i]);
+    if (store.is_material(i))
+      expected += 0.5 * omega[i].dot(momentum[i]);
+  }
+  KineticEnergy energy(store);
+  EXPECT_NEAR(sample_once(energy, store, 0.0)[1], expected, kTight);
+  EXPECT_GT(expected, 0.0);
+}
+
 TEST(KineticEnergy, WithoutBothFieldsOnlyTranslation) {
   // SPH with turning bodies has angular_velocity (on wall particles) but no radius.
   for (const auto& [radius, omega] : {std::pair{false, false}, {false, true}, {true, false}}) {

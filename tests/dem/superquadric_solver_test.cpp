@@ -19,8 +19,10 @@
 #include <numbers>
 #include <random>
 
+#include "core/error.hpp"
 #include "dem/dem_setups.hpp"
 #include "dem/dem_solver.hpp"
+#include "geometry/box_container_surface.hpp"
 #include "geometry/plane_surface.hpp"
 
 namespace partimix::dem {
@@ -145,6 +147,31 @@ TEST(SuperquadricSolver, ElasticFrictionlessEllipsoidsInABoxKeepTheirEnergy) {
   EXPECT_GT(samples, 100);
   EXPECT_LT(worst, 1e-2);
   EXPECT_EQ(solver.derived_parameters()["contact_detection_failures [-]"], 0.0);
+}
+
+// A wall of several faces gives one contact per wall, which a long grain in a corner defeats:
+// refused with superquadrics, naming the wall (docs/dem.md, "Walls and superquadrics").
+TEST(SuperquadricSolver, WallsOfSeveralFacesAreRefused) {
+  const Superquadric ellipsoid(Vec3(1.0e-3, 1.0e-3, 2.0e-3), 2.0, 2.0);
+  Config config = elastic_frictionless(ellipsoid, 1.0e7);
+  add_plane(config, Vec3::Zero(), Vec3::UnitY());
+  config.walls.push_back(
+      {std::make_shared<geometry::BoxContainerSurface>(Vec3::Constant(-0.01), Vec3::Constant(0.01),
+                                                       std::vector<geometry::Face>{}),
+       {},
+       {2.0e11, 0.3},
+       {}});
+  Grains grains;
+  grains.position = {Vec3(0.0, 0.005, 0.0)};
+  grains.radius = {0.0};
+  grains.species = {0};
+  ParticleStore store;
+  try {
+    DemSolver solver(store, box(0.02), config, Vec3::Zero(), grains);
+    FAIL() << "a box wall was accepted";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.location().key_path, "walls[1].shape");
+  }
 }
 
 }  // namespace
