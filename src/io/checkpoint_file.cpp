@@ -35,7 +35,8 @@ class Writer {
 
   std::filesystem::path file_;
   Hdf5Handle hdf5_file_;
-  // Without modification times in the object headers, the same archive gives the same bytes.
+  // Without modification times in the object headers (the root group's included, set with the
+  // file options), the same archive gives the same bytes.
   Hdf5Handle group_options_;
   Hdf5Handle dataset_options_;
   std::set<std::string> groups_;
@@ -44,6 +45,7 @@ class Writer {
 Writer::Writer(const std::filesystem::path& tmp, const std::filesystem::path& file) : file_(file) {
   Hdf5Handle file_options = make(H5Pcreate(H5P_FILE_CREATE), H5Pclose, "file options");
   check(H5Pset_userblock(file_options.get(), checkpoint_header::kBytes), "the header space");
+  check(H5Pset_obj_track_times(file_options.get(), false), "file options");
   Hdf5Handle access = make(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "file access options");
   check(H5Pset_libver_bounds(access.get(), H5F_LIBVER_V18, H5F_LIBVER_V18), "format bounds");
   hdf5_file_ = make(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, file_options.get(), access.get()),
