@@ -118,8 +118,12 @@ int run_command(const RunArguments& arguments) {
   install_interrupt_handler();
   ConsoleMonitor monitor(stderr);
   try {
+    // Before the simulation is built: its fill and settling run on these threads too.
+    if (arguments.threads > 0)
+      omp_set_num_threads(arguments.threads);
     const io::Case the_case = io::load_case(arguments.case_file, arguments.overrides);
     RunOptions options;
+    options.threads = omp_get_max_threads();
     options.output_dir = output_dir_of(arguments, the_case);
     options.overwrite = arguments.overwrite;
     if (arguments.resume_dir.empty())
@@ -130,9 +134,6 @@ int run_command(const RunArguments& arguments) {
     monitor.finish();
     print_warnings(simulation);
     estimate_run(the_case, simulation);
-    if (arguments.threads > 0)
-      omp_set_num_threads(arguments.threads);
-    options.threads = omp_get_max_threads();
     options.show_progress = !arguments.quiet;
     Runner runner(the_case, simulation, options);
     fmt::print(stderr, "partimix {}: {} ({} particles, {} threads) -> {}\n", PARTIMIX_VERSION,

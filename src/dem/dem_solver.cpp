@@ -266,6 +266,8 @@ void DemSolver::compute_loads(double dt) {
     grid_->build(x);
     pairs_->build(*grid_, x, *radius_);
   }
+  if (angular_momentum_)
+    update_frames();
   int failures = 0;
 #pragma omp parallel for schedule(static) reduction(+ : failures)
   for (std::size_t k = 0; k < pairs_->size(); ++k)

@@ -12,6 +12,7 @@
 
 #include "dem/config.hpp"
 #include "dem/contact_history.hpp"
+#include "dem/ellipsoid_contact.hpp"
 #include "dem/normal_contact.hpp"
 #include "dem/pair_list.hpp"
 #include "dem/rigid_rotation.hpp"
@@ -92,12 +93,21 @@ class DemSolver final : public Solver {
   // their tolerance (superquadrics, dem_solver_superquadrics.cpp).
   int pair_loads(std::size_t k, double dt);
   int shaped_pair_loads(std::size_t k, const Vec3& rij, double dt);
+  SuperquadricContact shaped_contact(std::size_t i, std::size_t j, const Vec3& centre_j,
+                                     const PairHistory& history) const;
   bool wall_loads(std::size_t i, double dt, int& failures);
   // Grain i against wall w: the normal, overlap, velocity of the contact point and the arm from
   // the centre to it; false when they are apart.
   bool sphere_wall_contact(std::size_t i, std::size_t w, Contact& c, Vec3& arm) const;
   bool shaped_wall_contact(std::size_t i, std::size_t w, Contact& c, Vec3& arm,
                            int& failures) const;
+  // A shaped run's grain frames, set from the orientations before each step's contacts: the
+  // rotation (body to world) and, for spheres and ellipsoids, the inverse shape matrix of their
+  // contact function (dem/ellipsoid_contact.hpp).
+  void update_frames();
+  bool ellipsoidal(std::size_t i) const;  // a sphere or an ellipsoid
+  Ellipsoid ellipsoid(std::size_t i, const Vec3& centre) const;
+  Vec3 half_axes(std::size_t i) const;
   // The radius of the Hertz law: the grain's, or its shape's volume-equivalent radius.
   double hertz_radius(std::size_t i) const;
   Quaternion orientation(std::size_t i) const;
@@ -124,6 +134,11 @@ class DemSolver final : public Solver {
   std::vector<const Superquadric*> shapes_;
   std::vector<std::optional<RigidRotor>> rotors_;
   std::vector<Vec3>* angular_momentum_ = nullptr;  // world frame; runs with superquadrics only
+  struct GrainFrame {
+    Mat3 rotation;
+    Mat3 inverse_shape;
+  };
+  std::vector<GrainFrame> frames_;  // runs with superquadrics only
   std::int64_t contact_failures_ =
       0;  // contact detections that missed their tolerance, in all steps
   std::unique_ptr<CellGrid> grid_;

@@ -6,10 +6,59 @@
 #include <optional>
 
 #include "dem/dem_solver.hpp"
+#include "dem/ellipsoid_contact.hpp"
 #include "dem/superquadric_contact.hpp"
 #include "dem/superquadric_wall.hpp"
 
 namespace partimix::dem {
+
+void DemSolver::update_frames() {
+  frames_.resize(store_.size());
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < store_.size(); ++i) {
+    frames_[i].rotation = orientation(i).toRotationMatrix();
+    if (ellipsoidal(i))
+      frames_[i].inverse_shape = ellipsoid_inverse_shape(frames_[i].rotation, half_axes(i));
+  }
+}
+
+bool DemSolver::ellipsoidal(std::size_t i) const {
+  const Superquadric* shape = shapes_[(*species_)[i]];
+  return shape == nullptr || shape->is_ellipsoid();
+}
+
+Vec3 DemSolver::half_axes(std::size_t i) const {
+  const Superquadric* shape = shapes_[(*species_)[i]];
+  return shape ? shape->half_axes() : Vec3::Constant((*radius_)[i]);
+}
+
+Ellipsoid DemSolver::ellipsoid(std::size_t i, const Vec3& centre) const {
+  return {centre, frames_[i].rotation, half_axes(i), frames_[i].inverse_shape};
+}
+
+// Two ellipsoids (or spheres) by their contact function, other pairs by the general midway
+// point (dem/superquadric_contact.hpp), each warm-started from the pair's history.
+SuperquadricContact DemSolver::shaped_contact(std::size_t i, std::size_t j, const Vec3& centre_j,
+                                              const PairHistory& history) const {
+  const Vec3& centre_i = store_.position()[i];
+  if (ellipsoidal(i) && ellipsoidal(j)) {
+    return find_ellipsoid_contact(ellipsoid(i, centre_i), ellipsoid(j, centre_j),
+                                  history.mu > 0.0 ? std::optional(history.mu) : std::nullopt);
+  }
+  // A sphere meeting a blocky grain is the superquadric of its radius (made here: rare).
+  std::optional<Superquadric> sphere_i;
+  std::optional<Superquadric> sphere_j;
+  auto shape_of = [&](std::size_t g, std::optional<Superquadric>& sphere) -> const Superquadric& {
+    if (const Superquadric* shape = shapes_[(*species_)[g]])
+      return *shape;
+    return sphere.emplace(Vec3::Constant((*radius_)[g]), 2.0, 2.0);
+  };
+  std::optional<MidwayStart> start;
+  if (history.mu > 0.0)
+    start = MidwayStart{centre_i + history.midway, history.mu};
+  return find_midway_contact({&shape_of(i, sphere_i), centre_i, frames_[i].rotation},
+                             {&shape_of(j, sphere_j), centre_j, frames_[j].rotation}, start);
+}
 
 int DemSolver::shaped_pair_loads(std::size_t k, const Vec3& rij, double dt) {
   const auto& x = store_.position();
@@ -19,21 +68,8 @@ int DemSolver::shaped_pair_loads(std::size_t k, const Vec3& rij, double dt) {
   const std::size_t i = pairs_->first(k);
   const std::size_t j = pairs_->second(k);
   const Vec3 centre_j = x[i] - rij;  // the image of j nearest to i
-  // A sphere meeting a superquadric is the superquadric of its radius (made here: rare).
-  std::optional<Superquadric> sphere_i;
-  std::optional<Superquadric> sphere_j;
-  auto shape_of = [&](std::size_t g, std::optional<Superquadric>& sphere) -> const Superquadric& {
-    if (const Superquadric* shape = shapes_[(*species_)[g]])
-      return *shape;
-    return sphere.emplace(Vec3::Constant((*radius_)[g]), 2.0, 2.0);
-  };
   PairHistory& history = pairs_->history(k);
-  std::optional<MidwayStart> start;
-  if (history.mu > 0.0)
-    start = MidwayStart{x[i] + history.midway, history.mu};
-  const SuperquadricContact found =
-      find_contact({&shape_of(i, sphere_i), x[i], orientation(i).toRotationMatrix()},
-                   {&shape_of(j, sphere_j), centre_j, orientation(j).toRotationMatrix()}, start);
+  const SuperquadricContact found = shaped_contact(i, j, centre_j, history);
   const int failures = found.converged ? 0 : 1;
   // The warm start of the next step: kept while Newton runs for the pair (its bounding boxes
   // overlap), touching or not.
@@ -73,7 +109,7 @@ bool DemSolver::shaped_wall_contact(std::size_t i, std::size_t w, Contact& c, Ve
   const Vec3& x = store_.position()[i];
   const geometry::RigidPose& pose = walls_[w].pose;
   const Vec3 local = pose.rotation.transpose() * (x - pose.origin) + pose.start_origin;
-  const Mat3 body_to_local = pose.rotation.transpose() * orientation(i).toRotationMatrix();
+  const Mat3 body_to_local = pose.rotation.transpose() * frames_[i].rotation;
   const WallContact found =
       superquadric_wall_contact(*shapes_[(*species_)[i]], local, body_to_local, *walls_[w].surface);
   failures += found.converged ? 0 : 1;

@@ -1,6 +1,7 @@
 #include "dem/superquadric.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 namespace partimix::dem {
@@ -58,6 +59,7 @@ Superquadric::Superquadric(const Vec3& half_axes, double n1, double n2)
   const double c = axes_.z();
   const double abc = a * b * c * e1 * e2;
   volume_ = 2.0 * abc * std::beta(e1 / 2.0 + 1.0, e1) * std::beta(e2 / 2.0, e2 / 2.0);
+  equivalent_radius_ = std::cbrt(0.75 * volume_ / std::numbers::pi);
   const double in_plane = std::beta(3.0 * e2 / 2.0, e2 / 2.0) * std::beta(e1 / 2.0, 2.0 * e1 + 1.0);
   const double along_z =
       4.0 * std::beta(e2 / 2.0, e2 / 2.0 + 1.0) * std::beta(3.0 * e1 / 2.0, e1 + 1.0);
@@ -96,6 +98,10 @@ Mat3 Superquadric::hessian(const Vec3& x) const {
 // S = A^(n2/(n2-1)) + B^(n2/(n2-1)), the point is t (A^(1/(n2-1)), B^(1/(n2-1))) in the scaled
 // x-y coordinates and (lambda C)^(1/(n1-1)) along z, lambda = t^(n1-1) S^(n1/n2-1).
 Vec3 Superquadric::support(const Vec3& direction) const {
+  if (is_ellipsoid()) {
+    const Vec3 scaled = axes_.cwiseProduct(direction);
+    return axes_.cwiseProduct(scaled) / scaled.norm();
+  }
   const Vec3 d = direction.normalized();
   const double big_a = axes_.x() * std::abs(d.x());
   const double big_b = axes_.y() * std::abs(d.y());

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dem/ellipsoid_contact.hpp"
 #include "dem/oriented_box.hpp"
 #include "dem/superquadric_gauge.hpp"
 
@@ -185,6 +186,16 @@ SuperquadricContact contact_at(const GrainPose& i, const GrainPose& j, const Mid
 SuperquadricContact find_contact(const GrainPose& i, const GrainPose& j,
                                  const std::optional<MidwayStart>& start,
                                  const ContactTolerance& tolerance) {
+  if (!i.shape->is_ellipsoid() || !j.shape->is_ellipsoid())
+    return find_midway_contact(i, j, start, tolerance);
+  return find_ellipsoid_contact(make_ellipsoid(i.centre, i.rotation, i.shape->half_axes()),
+                                make_ellipsoid(j.centre, j.rotation, j.shape->half_axes()),
+                                start ? std::optional<double>(start->mu) : std::nullopt);
+}
+
+SuperquadricContact find_midway_contact(const GrainPose& i, const GrainPose& j,
+                                        const std::optional<MidwayStart>& start,
+                                        const ContactTolerance& tolerance) {
   if (!bounds_overlap(i, j))
     return {};
   const double length = length_scale(i, j);

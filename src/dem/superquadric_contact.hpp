@@ -45,10 +45,17 @@ struct SuperquadricContact {
   bool near = false;           // the bounding tests passed: Newton ran, midway and mu hold
 };
 
-// The contact of grain i with grain j, Newton started from `start` when given (and from the
-// centre line if that fails).
+// The contact of grain i with grain j: two ellipsoids by their contact function
+// (dem/ellipsoid_contact.hpp, warm-started from start->mu), any other pair by
+// find_midway_contact.
 SuperquadricContact find_contact(const GrainPose& i, const GrainPose& j,
                                  const std::optional<MidwayStart>& start,
                                  const ContactTolerance& tolerance = {});
+
+// The contact of grain i with grain j by the midway point's Newton iteration, started from
+// `start` when given (and from the centre line if that fails). Any superquadrics.
+SuperquadricContact find_midway_contact(const GrainPose& i, const GrainPose& j,
+                                        const std::optional<MidwayStart>& start,
+                                        const ContactTolerance& tolerance = {});
 
 }  // namespace partimix::dem

@@ -225,16 +225,16 @@ TEST(SuperquadricContact, RandomOverlapsMatchThePenetrationDepth) {
   EXPECT_LT(worst_point, 1.2);
 }
 
-// After a small motion (j moves by 1% of L and turns by 1 degree), Newton restarted from the
-// last midway point and multiplier converges in at most 4 steps (3 on average; the cold start
-// takes 5) to the cold start's answer.
+// After a small motion (j moves by 1% of L and turns by 1 degree), the midway point's Newton
+// iteration restarted from the last midway point and multiplier converges in at most 4 steps (3 on
+// average; the cold start takes 5) to the cold start's answer.
 TEST(SuperquadricContact, WarmStartConvergesInFewSteps) {
   reference::PairMaker maker(5);
   int warm_steps = 0, cold_steps = 0, most = 0;
   const int pairs = 200;
   for (int k = 0; k < pairs; ++k) {
     reference::RandomPair pair = maker.make(-maker.uniform(0.01, 0.2));
-    const SuperquadricContact before = find_contact(pair.i, pair.j, std::nullopt);
+    const SuperquadricContact before = find_midway_contact(pair.i, pair.j, std::nullopt);
     ASSERT_TRUE(before.touching);
     pair.j.centre +=
         0.01 * pair.length *
@@ -242,8 +242,8 @@ TEST(SuperquadricContact, WarmStartConvergesInFewSteps) {
     pair.j.rotation =
         turn(std::numbers::pi / 180.0, Vec3(1.0, maker.uniform(-1, 1), 0.5)) * pair.j.rotation;
     const SuperquadricContact warm =
-        find_contact(pair.i, pair.j, MidwayStart{before.midway, before.mu});
-    const SuperquadricContact cold = find_contact(pair.i, pair.j, std::nullopt);
+        find_midway_contact(pair.i, pair.j, MidwayStart{before.midway, before.mu});
+    const SuperquadricContact cold = find_midway_contact(pair.i, pair.j, std::nullopt);
     ASSERT_TRUE(warm.converged && warm.touching);
     EXPECT_NEAR(warm.overlap, cold.overlap, 1e-9 * pair.length);
     EXPECT_LT(angle(warm.normal, cold.normal), 1e-7);

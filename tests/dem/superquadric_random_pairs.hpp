@@ -1,6 +1,7 @@
 #pragma once
 // Random pairs of superquadric grains for tests/dem/superquadric_contact_test.cpp: half-axes in
-// [0.5, 2], blockiness n1, n2 in {2, 3, 4, 6, 8, 10} (a quarter of the grains ellipsoids),
+// [0.5, 2], blockiness n1, n2 in {2, 3, 4, 6, 8, 10} (a quarter of the grains ellipsoids, or a
+// chosen share),
 // uniformly random orientations and direction between the centres, and a chosen gap along the
 // centre line from the distance at which the grains would just touch (by the brute-force
 // reference of superquadric_reference.hpp).
@@ -26,7 +27,9 @@ struct RandomPair {
 
 class PairMaker {
  public:
-  explicit PairMaker(unsigned seed) : random_(seed) {}
+  // `ellipsoids`: the share of ellipsoids among the grains.
+  explicit PairMaker(unsigned seed, double ellipsoids = 0.25)
+      : random_(seed), ellipsoids_(ellipsoids) {}
 
   // Centre distance touching + gap * length along a random direction.
   RandomPair make(double gap) {
@@ -52,7 +55,7 @@ class PairMaker {
  private:
   std::unique_ptr<Superquadric> shape() {
     const Vec3 axes(uniform(0.5, 2.0), uniform(0.5, 2.0), uniform(0.5, 2.0));
-    if (uniform(0.0, 1.0) < 0.25)
+    if (uniform(0.0, 1.0) < ellipsoids_)
       return std::make_unique<Superquadric>(axes, 2.0, 2.0);
     constexpr std::array<double, 6> kBlockiness{2.0, 3.0, 4.0, 6.0, 8.0, 10.0};
     std::uniform_int_distribution<std::size_t> pick(0, kBlockiness.size() - 1);
@@ -73,6 +76,7 @@ class PairMaker {
   }
 
   std::mt19937 random_;
+  double ellipsoids_;
 };
 
 }  // namespace partimix::dem::reference

@@ -1,0 +1,131 @@
+#include "dem/ellipsoid_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace partimix::dem {
+namespace {
+
+constexpr int kMaxIterations = 60;
+constexpr double kLastStep = 1e-7;  // on t, which lies in (0, 1)
+
+// F(t), F'(t) and F''(t) with y = C(t)^-1 d and dy/dt = -C^-1 D y (docs/dem.md, "Ellipsoid
+// pairs"); F only when F > 1, which proves the grains apart.
+struct ContactFunction {
+  double value;
+  double slope;
+  double curvature;
+  Vec3 y;
+  Vec3 dy_dt;
+};
+
+ContactFunction contact_function(const Ellipsoid& i, const Ellipsoid& j, const Vec3& d, double t) {
+  const Mat3 c_inverse = ((1.0 - t) * i.inverse_shape + t * j.inverse_shape).inverse();
+  const double u = t * (1.0 - t);
+  ContactFunction f{0.0, 0.0, 0.0, c_inverse * d, Vec3::Zero()};
+  const double s = d.dot(f.y);
+  f.value = u * s;
+  if (f.value > 1.0)
+    return f;
+  const Vec3 dy = (j.inverse_shape - i.inverse_shape) * f.y;
+  f.dy_dt = -(c_inverse * dy);
+  const double q = f.y.dot(dy);
+  f.slope = (1.0 - 2.0 * t) * s - u * q;
+  f.curvature = -2.0 * s - 2.0 * (1.0 - 2.0 * t) * q - 2.0 * u * dy.dot(f.dy_dt);
+  return f;
+}
+
+// The cold start: the equivalent spheres along the centre line, t0 = r_i / (r_i + r_j) with
+// r = |d| / N(d) each grain's radius towards the other.
+double centre_line_start(const Ellipsoid& i, const Ellipsoid& j, const Vec3& d) {
+  const double inverse_radius_i = std::sqrt(i.quadratic_form(d));
+  const double inverse_radius_j = std::sqrt(j.quadratic_form(d));
+  return inverse_radius_j / (inverse_radius_i + inverse_radius_j);
+}
+
+struct Maximum {
+  double t;
+  ContactFunction f;
+  int iterations;
+  bool converged;
+};
+
+// Newton's method on F'(t) = 0 inside the bracket [lo, hi] that F' > 0 below the root and
+// F' < 0 above it narrow; a step leaving the bracket is replaced by bisection. F(t) <= F* for
+// every t, so F > 1 at any iterate proves the grains apart: the search stops there. A step
+// below kLastStep is the last: it is taken to first order (y + step dy/dt, F + step F'), whose
+// error, of order step^2, lies below round-off.
+Maximum maximise(const Ellipsoid& i, const Ellipsoid& j, const Vec3& d, double t) {
+  double lo = 0.0;
+  double hi = 1.0;
+  for (int n = 0; n < kMaxIterations; ++n) {
+    ContactFunction f = contact_function(i, j, d, t);
+    if (f.value > 1.0)
+      return {t, f, n + 1, true};
+    const double step = f.curvature < 0.0 ? -f.slope / f.curvature : 0.0;
+    if (f.curvature < 0.0 && std::abs(step) <= kLastStep) {
+      f.y += step * f.dy_dt;
+      f.value += step * f.slope;
+      return {t + step, f, n + 1, true};
+    }
+    (f.slope > 0.0 ? lo : hi) = t;
+    t = t + step > lo && t + step < hi ? t + step : 0.5 * (lo + hi);
+  }
+  return {t, contact_function(i, j, d, t), kMaxIterations, false};
+}
+
+// The surface points x* + alpha n of i and x* + beta n of j, from their quadratics in the forms
+// without cancellation (docs/dem.md).
+void add_surface_points(const Ellipsoid& i, const Ellipsoid& j, const Maximum& m,
+                        SuperquadricContact& c) {
+  const double depth = 1.0 - m.f.value;
+  const double y = m.f.y.norm();
+  const double b_i = (1.0 - m.t) * y;
+  const double b_j = m.t * y;
+  const double alpha = depth / (b_i + std::sqrt(b_i * b_i + i.quadratic_form(c.normal) * depth));
+  const double beta = -depth / (b_j + std::sqrt(b_j * b_j + j.quadratic_form(c.normal) * depth));
+  c.overlap = alpha - beta;
+  c.point = c.midway + 0.5 * (alpha + beta) * c.normal;
+}
+
+}  // namespace
+
+Mat3 ellipsoid_inverse_shape(const Mat3& rotation, const Vec3& half_axes) {
+  return rotation * half_axes.cwiseAbs2().asDiagonal() * rotation.transpose();
+}
+
+Ellipsoid make_ellipsoid(const Vec3& centre, const Mat3& rotation, const Vec3& half_axes) {
+  return {centre, rotation, half_axes, ellipsoid_inverse_shape(rotation, half_axes)};
+}
+
+double Ellipsoid::quadratic_form(const Vec3& x) const {
+  return (rotation.transpose() * x).cwiseQuotient(half_axes).squaredNorm();
+}
+
+SuperquadricContact find_ellipsoid_contact(const Ellipsoid& i, const Ellipsoid& j,
+                                           std::optional<double> mu) {
+  const Vec3 d = j.centre - i.centre;
+  const double reach = i.half_axes.maxCoeff() + j.half_axes.maxCoeff();
+  if (d.squaredNorm() >= reach * reach)
+    return {};
+  SuperquadricContact c;
+  c.near = true;
+  if (d.squaredNorm() == 0.0) {
+    c.converged = false;
+    return c;
+  }
+  const double start = mu ? 1.0 / (1.0 + *mu * *mu) : centre_line_start(i, j, d);
+  const Maximum m = maximise(i, j, d, std::clamp(start, 1e-6, 1.0 - 1e-6));
+  c.converged = m.converged;
+  c.iterations = m.iterations;
+  c.mu = std::sqrt((1.0 - m.t) / m.t);
+  c.touching = m.converged && m.f.value < 1.0;
+  if (c.touching) {
+    c.midway = i.centre + (1.0 - m.t) * (i.inverse_shape * m.f.y);
+    c.normal = m.f.y.normalized();
+    add_surface_points(i, j, m, c);
+  }
+  return c;
+}
+
+}  // namespace partimix::dem

@@ -1,0 +1,37 @@
+#pragma once
+// Contact detection between two ellipsoids, spheres included (docs/dem.md, "Ellipsoid pairs: the
+// midway point in one unknown"): the Perram-Wertheim contact function F(t) maximised over t in
+// [0, 1] by a bracketed Newton iteration with 3 x 3 solves. The result is the midway point of
+// find_contact (dem/superquadric_contact.hpp), with the same normal, overlap and contact point,
+// without its powers and 4 x 4 systems. A pure function of its inputs that does not allocate.
+#include <optional>
+
+#include "core/vec.hpp"
+#include "dem/superquadric_contact.hpp"
+
+namespace partimix::dem {
+
+// An ellipsoid in the world frame: (x - centre)^T A (x - centre) <= 1 with
+// A = R diag(a^-2, b^-2, c^-2) R^T, R its rotation (body to world).
+struct Ellipsoid {
+  Vec3 centre;
+  Mat3 rotation;
+  Vec3 half_axes;
+  Mat3 inverse_shape;  // A^-1 = R diag(a^2, b^2, c^2) R^T (ellipsoid_inverse_shape)
+
+  // (x^T A x) for a world vector x from the centre.
+  double quadratic_form(const Vec3& x) const;
+};
+
+Mat3 ellipsoid_inverse_shape(const Mat3& rotation, const Vec3& half_axes);
+Ellipsoid make_ellipsoid(const Vec3& centre, const Mat3& rotation, const Vec3& half_axes);
+
+// The contact of ellipsoid i with ellipsoid j, the iteration started from the multiplier mu of
+// the last step's midway point when given (t = 1 / (1 + mu^2)), else from the equivalent spheres
+// on the centre line. `near` is false (and nothing else set) when the bounding spheres are apart;
+// the midway point, normal, overlap and contact point are set for touching grains only (mu,
+// the warm start, always).
+SuperquadricContact find_ellipsoid_contact(const Ellipsoid& i, const Ellipsoid& j,
+                                           std::optional<double> mu);
+
+}  // namespace partimix::dem
