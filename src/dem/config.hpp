@@ -9,6 +9,7 @@
 
 #include "dem/pair_properties.hpp"
 #include "dem/superquadric.hpp"
+#include "dem/surface_curvature.hpp"
 #include "geometry/motion.hpp"
 #include "geometry/surface.hpp"
 
@@ -38,14 +39,16 @@ struct WallConfig {
 };
 
 struct Config {
-  std::string normal_law = "hertz";         // hertz | linear
-  double linear_stiffness = 0.0;            // k_n of the linear law [N/m]
-  std::string rolling_resistance = "none";  // none | constant_torque | elastic_plastic
-  double rolling_damping = 0.3;             // eta_r of elastic_plastic
-  bool seed_tangential_cap = false;         // tangential_cap: seed
-  double rayleigh_fraction = 0.2;           // dt = f t_R
-  int sort_interval = 50;                   // steps between sorts by cell
-  double neighbour_skin = 0.5;              // skin of the pair list, in largest radii
+  std::string normal_law = "hertz";                    // hertz | linear
+  double linear_stiffness = 0.0;                       // k_n of the linear law [N/m]
+  std::string rolling_resistance = "none";             // none | constant_torque | elastic_plastic
+  double rolling_damping = 0.3;                        // eta_r of elastic_plastic
+  bool seed_tangential_cap = false;                    // tangential_cap: seed
+  double rayleigh_fraction = 0.2;                      // dt = f t_R
+  int sort_interval = 50;                              // steps between sorts by cell
+  double neighbour_skin = 0.5;                         // skin of the pair list, in largest radii
+  HertzRadius hertz_radius = HertzRadius::equivalent;  // of superquadrics
+  double curvature_limit = 10.0;  // curvature radii within [r / limit, limit r]
   std::vector<Species> species;
   // Species a with species b: particle_interactions[a * species.size() + b] (symmetric).
   std::vector<Interaction> particle_interactions;

@@ -51,6 +51,17 @@ Superquadric read_shape(Reader& shape) {
   return Superquadric(Vec3(a, a, sigma * a), blockiness.x(), blockiness.y());
 }
 
+// `hertz_radius` and `curvature_limit` (docs/dem.md, "Hertz radius").
+void read_hertz_radius(Reader& section, Config& config) {
+  const std::string kind = section.choice("hertz_radius", "equivalent",
+                                          {"equivalent", "mean_curvature", "gaussian_curvature"});
+  config.hertz_radius = kind == "equivalent"       ? HertzRadius::equivalent
+                        : kind == "mean_curvature" ? HertzRadius::mean_curvature
+                                                   : HertzRadius::gaussian_curvature;
+  config.curvature_limit =
+      section.optional<double>("curvature_limit", config.curvature_limit, at_least(1.0));
+}
+
 std::vector<Species> read_species(Reader& section) {
   std::vector<Species> species;
   for (Reader& item : section.list("species")) {
@@ -259,6 +270,7 @@ std::shared_ptr<DemSection> read_dem_section(Reader& root, const io::Case& the_c
                         "must be at most 4 largest radii (a wider skin lists far more pairs "
                         "than touch)");
   }
+  read_hertz_radius(section, config);
   config.species = read_species(section);
   read_interactions(section, config);
   for (const io::WallSpec& wall : the_case.walls)

@@ -352,7 +352,9 @@ bool DemSolver::wall_loads(std::size_t i, double dt, int& failures) {
     }
     touched |= std::uint64_t{1} << slot;
     c.relative_angular_velocity = (*angular_velocity_)[i] - walls_[w].pose.angular_velocity;
-    c.pair = pair_properties(wall_materials_[w * config_.species.size() + s_i], radius,
+    // The grain's own surface point: the deepest point into the wall (docs/dem.md).
+    const double contact = shaped ? contact_radius(i, arm - 0.5 * c.overlap * c.normal) : radius;
+    c.pair = pair_properties(wall_materials_[w * config_.species.size() + s_i], contact,
                              std::numeric_limits<double>::infinity(), m[i],
                              std::numeric_limits<double>::infinity());
     c.interaction = &config_.wall_interaction(w, static_cast<std::size_t>(s_i));

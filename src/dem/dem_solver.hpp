@@ -110,6 +110,9 @@ class DemSolver final : public Solver {
   Vec3 half_axes(std::size_t i) const;
   // The radius of the Hertz law: the grain's, or its shape's volume-equivalent radius.
   double hertz_radius(std::size_t i) const;
+  // Grain i's radius in the Hertz law at its surface point centre + arm (world frame): its
+  // radius or its shape's by dem.hertz_radius (docs/dem.md, "Hertz radius").
+  double contact_radius(std::size_t i, const Vec3& arm) const;
   Quaternion orientation(std::size_t i) const;
   void set_orientation(std::size_t i, const Quaternion& q);
   ContactLoad load_of(const Contact& contact, Vec3& spring, Vec3& rolling_spring, double dt) const;

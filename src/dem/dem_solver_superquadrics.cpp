@@ -32,6 +32,14 @@ Vec3 DemSolver::half_axes(std::size_t i) const {
   return shape ? shape->half_axes() : Vec3::Constant((*radius_)[i]);
 }
 
+double DemSolver::contact_radius(std::size_t i, const Vec3& arm) const {
+  const Superquadric* shape = shapes_[(*species_)[i]];
+  if (shape == nullptr)
+    return (*radius_)[i];
+  return dem::hertz_radius(*shape, frames_[i].rotation.transpose() * arm, config_.hertz_radius,
+                           config_.curvature_limit);
+}
+
 Ellipsoid DemSolver::ellipsoid(std::size_t i, const Vec3& centre) const {
   return {centre, frames_[i].rotation, half_axes(i), frames_[i].inverse_shape};
 }
@@ -88,10 +96,12 @@ int DemSolver::shaped_pair_loads(std::size_t k, const Vec3& rij, double dt) {
   c.contact_velocity = v[i] + omega[i].cross(arm_i) - v[j] - omega[j].cross(arm_j);
   c.relative_angular_velocity = omega[i] - omega[j];
   const std::size_t pair = (*species_)[i] * config_.species.size() + (*species_)[j];
+  const Vec3 to_surface = 0.5 * found.overlap * found.normal;  // X_i = point + to_surface
+  c.pair = pair_properties(particle_materials_[pair], contact_radius(i, arm_i + to_surface),
+                           contact_radius(j, arm_j - to_surface), m[i], m[j]);
+  c.interaction = &config_.particle_interactions[pair];
   const double radius_i = hertz_radius(i);
   const double radius_j = hertz_radius(j);
-  c.pair = pair_properties(particle_materials_[pair], radius_i, radius_j, m[i], m[j]);
-  c.interaction = &config_.particle_interactions[pair];
   const double inertia_i = 1.4 * m[i] * radius_i * radius_i;
   const double inertia_j = 1.4 * m[j] * radius_j * radius_j;
   c.rolling_inertia = 1.0 / (1.0 / inertia_i + 1.0 / inertia_j);

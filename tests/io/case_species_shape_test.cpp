@@ -1,5 +1,6 @@
 // dem.species[].shape (docs/case-reference.md, "dem"): superquadric grains by their half-axes,
-// or by the seed's aspect ratio and equal-volume radius; every bad value is located.
+// or by the seed's aspect ratio and equal-volume radius, and their Hertz radius; every bad value
+// is located.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -79,6 +80,23 @@ TEST(CaseSpeciesShape, BadShapesAreLocated) {
     EXPECT_THAT(error.message(), HasSubstr(bad.message)) << bad.shape;
     EXPECT_GT(error.location().line, 0) << bad.shape;
   }
+}
+
+TEST(CaseSpeciesShape, HertzRadiusOptionAndItsLimit) {
+  const std::string shape = "{half_axes: [0.001, 0.001, 0.002]}";
+  const auto config_of = [](const io::Case& the_case) {
+    return the_case.section<dem::DemSection>("dem").config;
+  };
+  EXPECT_EQ(config_of(load_text(with_shape(shape))).hertz_radius, dem::HertzRadius::equivalent);
+  const dem::Config chosen = config_of(
+      load_text(with_shape(shape, "  hertz_radius: gaussian_curvature\n  curvature_limit: 4\n")));
+  EXPECT_EQ(chosen.hertz_radius, dem::HertzRadius::gaussian_curvature);
+  EXPECT_EQ(chosen.curvature_limit, 4.0);
+  const InputError unknown = load_error(with_shape(shape, "  hertz_radius: local\n"));
+  EXPECT_EQ(unknown.location().key_path, "dem.hertz_radius");
+  EXPECT_GT(unknown.location().line, 0);
+  const InputError below = load_error(with_shape(shape, "  curvature_limit: 0.5\n"));
+  EXPECT_EQ(below.location().key_path, "dem.curvature_limit");
 }
 
 TEST(CaseSpeciesShape, ListedSuperquadricsTakeTheirSizeFromTheShape) {
