@@ -195,7 +195,7 @@ void MethodOutputs::open_frames(const std::filesystem::path& output_dir,
 std::string MethodOutputs::write_frame(const std::filesystem::path& output_dir, double time) {
   const std::string file =
       fmt::format("frames/{}_{:06d}.vtp", name_, collection_->entries().size());
-  io::write_vtp_frame(output_dir / file, *method_.store, time);
+  io::write_vtp_frame(output_dir / file, *method_.store, time, method_.solver->frame_arrays());
   collection_->add(time, file);
   return file;
 }
