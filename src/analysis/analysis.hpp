@@ -84,17 +84,19 @@ struct AnalysisOptions {
   double diameter = 0.0;       // power_number: impeller diameter d_a (d_R) [m]
   double metzner_otto = 7.54;  // power_number: K of the Metzner-Otto shear rate K N [-]
   FlowScales fluid;
-  MixingRegion mixing;     // mixing: the sampling cells
-  PackingBox packing;      // packing_fraction
-  ProfileLine profile;     // velocity_profile
-  ReposeSection repose;    // angle_of_repose
-  MassRegion region_mass;  // mass_in_region
-  FluxPlane flux;          // mass_flux
-  HeightLine height;       // height_profile
+  MixingRegion mixing;               // mixing: the sampling cells
+  PackingBox packing;                // packing_fraction
+  ProfileLine profile;               // velocity_profile
+  ReposeSection repose;              // angle_of_repose
+  MassRegion region_mass;            // mass_in_region
+  FluxPlane flux;                    // mass_flux
+  HeightLine height;                 // height_profile
+  OrientationReference orientation;  // orientation_order
 };
 
 // Analyses a case file may ask for, by name: front_position, body_loads, power_number, mixing,
-// packing_fraction, velocity_profile, angle_of_repose, mass_in_region, height_profile.
+// packing_fraction, velocity_profile, angle_of_repose, mass_in_region, height_profile,
+// orientation_order.
 // (Kinetic energy and the largest speed are always sampled.)
 const Registry<Analysis, const AnalysisOptions&>& analysis_registry();
 

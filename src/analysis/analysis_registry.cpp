@@ -6,6 +6,7 @@
 #include "analysis/mass_flux.hpp"
 #include "analysis/mass_in_region.hpp"
 #include "analysis/mixing.hpp"
+#include "analysis/orientation_order.hpp"
 #include "analysis/packing_fraction.hpp"
 #include "analysis/power_number.hpp"
 #include "analysis/velocity_profile.hpp"
@@ -33,6 +34,9 @@ const Registry<Analysis, const AnalysisOptions&>& analysis_registry() {
           [](const AnalysisOptions& o) { return std::make_unique<MassInRegion>(o.region_mass); });
     r.add("height_profile",
           [](const AnalysisOptions& o) { return std::make_unique<HeightProfile>(o.height); });
+    r.add("orientation_order", [](const AnalysisOptions& o) {
+      return std::make_unique<OrientationOrder>(o.orientation);
+    });
     return r;
   }();
   return registry;

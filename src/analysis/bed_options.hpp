@@ -1,8 +1,8 @@
 #pragma once
 // Settings of the bed measurements (docs/mixing.md, "Measurements of a granular bed";
 // docs/case-reference.md, "analyses"): packing_fraction, velocity_profile, angle_of_repose,
-// mass_in_region and height_profile. They sit apart from the analyses so that AnalysisOptions
-// and the case's AnalysisSpec can hold them.
+// mass_in_region, height_profile and orientation_order. They sit apart from the analyses so that
+// AnalysisOptions and the case's AnalysisSpec can hold them.
 #include <limits>
 
 #include "core/vec.hpp"
@@ -65,6 +65,15 @@ struct HeightLine {
   double from = 0.0;  // [m]
   double to = 1.0;    // [m]
   int bins = 10;
+};
+
+// orientation_order: the reference direction e of the alignment: the unit `direction`, or, when
+// `velocity`, each grain's own direction of motion (grains not faster than `min_speed` are left
+// out of the alignment).
+struct OrientationReference {
+  bool velocity = true;
+  Vec3 direction = Vec3::UnitX();
+  double min_speed = 0.0;  // [m/s]
 };
 
 }  // namespace partimix::analysis

@@ -20,25 +20,38 @@ PackingFraction::PackingFraction(const PackingBox& box)
   measure_ = flat_ ? size.x() * size.y() : size.x() * size.y() * size.z();
 }
 
-void PackingFraction::sample(const ParticleStore& particles, double /*time*/,
-                             std::span<double> values) {
+// The solid volume (area when flat) of the material particles whose centre lies in the box:
+// each particle's `volume` when the particles carry it (superquadric grains), else the ball (in
+// 2D the disc) of its `radius`.
+double PackingFraction::solid_in_box(const ParticleStore& particles) const {
+  const Field<double>* volume = flat_ ? nullptr : particles.find_scalar("volume");
   const Field<double>* radius = particles.find_scalar("radius");
-  if (radius == nullptr) {
+  if (radius == nullptr && volume == nullptr) {
     throw RunError(
         "the analysis packing_fraction needs the particle field 'radius' (DEM grains); these "
         "particles have none");
   }
-  double solid = 0.0;
+  double volumes = 0.0;
+  double balls = 0.0;  // sum of (4/3) R^3 (R^2 when flat), times pi at the end
   for (std::size_t i = 0; i < particles.size(); ++i) {
-    if (!particles.is_material(i))
-      continue;
     const Vec3& x = particles.position()[i];
-    if ((x.array() >= box_.lo.array()).all() && (x.array() <= box_.hi.array()).all()) {
-      const double r = radius->values[i];
-      solid += flat_ ? r * r : r * r * r * (4.0 / 3.0);
+    const bool inside =
+        (x.array() >= box_.lo.array()).all() && (x.array() <= box_.hi.array()).all();
+    if (!particles.is_material(i) || !inside)
+      continue;
+    if (volume != nullptr) {
+      volumes += volume->values[i];
+      continue;
     }
+    const double r = radius->values[i];
+    balls += flat_ ? r * r : r * r * r * (4.0 / 3.0);
   }
-  last_ = std::numbers::pi * solid / measure_;
+  return std::numbers::pi * balls + volumes;
+}
+
+void PackingFraction::sample(const ParticleStore& particles, double /*time*/,
+                             std::span<double> values) {
+  last_ = solid_in_box(particles) / measure_;
   values[0] = last_;
 }
 

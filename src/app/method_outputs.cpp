@@ -28,6 +28,7 @@ analysis::AnalysisOptions options_of(const io::AnalysisSpec& spec, const io::Cas
   options.region_mass = spec.region_mass;
   options.flux = spec.flux;
   options.height = spec.height;
+  options.orientation = spec.orientation;
   if (spec.type == "body_loads" || spec.type == "power_number") {
     if (bodies == nullptr || static_cast<std::size_t>(spec.body) >= bodies->count()) {
       throw InputError(the_case.locate(spec.key + ".body"),
@@ -195,7 +196,7 @@ void MethodOutputs::open_frames(const std::filesystem::path& output_dir,
 std::string MethodOutputs::write_frame(const std::filesystem::path& output_dir, double time) {
   const std::string file =
       fmt::format("frames/{}_{:06d}.vtp", name_, collection_->entries().size());
-  io::write_vtp_frame(output_dir / file, *method_.store, time);
+  io::write_vtp_frame(output_dir / file, *method_.store, time, method_.solver->frame_arrays());
   collection_->add(time, file);
   return file;
 }

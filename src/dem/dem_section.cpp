@@ -1,5 +1,6 @@
 #include "dem/dem_section.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
@@ -242,6 +243,12 @@ void read_grains(Reader& section, const io::Case& the_case, DemSection& spec) {
 }
 
 }  // namespace
+
+bool DemSection::has_grain_axes() const {
+  return std::any_of(config.species.begin(), config.species.end(), [](const Species& s) {
+    return s.shape && (s.shape->half_axes().array() != s.shape->half_axes().x()).any();
+  });
+}
 
 std::shared_ptr<DemSection> read_dem_section(Reader& root, const io::Case& the_case) {
   if (the_case.domain.dimensions != 3)

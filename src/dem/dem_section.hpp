@@ -35,6 +35,8 @@ class DemSection final : public io::MethodSection {
 
   // Species 1 of the split is the tracer.
   bool has_tracer() const override { return config.species.size() >= 2; }
+  // A species with a shape of unequal half-axes.
+  bool has_grain_axes() const override;
 };
 
 // Reads `dem` from the root of a case file, with the walls of `the_case`.

@@ -99,12 +99,17 @@ void DemSolver::add_fields(const Grains& grains) {
   torque_ = &store_.add_vector("contact_torque", "N m").values;
   orientation_w_ = &store_.add_scalar("orientation_w", "", false).values;
   orientation_v_ = &store_.add_vector("orientation_v", "", false).values;
-  if (any_shaped(shapes_))
+  if (any_shaped(shapes_)) {
     angular_momentum_ = &store_.add_vector("angular_momentum", "kg m^2/s", false).values;
+    half_axes_ = &store_.add_vector("half_axes", "m").values;
+    volume_ = &store_.add_scalar("volume", "m^3", false).values;
+  }
   const std::size_t count = grains.position.size();
   if (count == 0)
     throw config_error("dem", "there are no grains");
   store_.resize(count);
+  if (any_shaped(shapes_))
+    glyphs_ = std::make_unique<GrainGlyphs>(count);
   const int species_count = static_cast<int>(config_.species.size());
   for (std::size_t i = 0; i < count; ++i) {
     const int s = grains.species[i];
@@ -121,8 +126,20 @@ void DemSolver::add_fields(const Grains& grains) {
     if (!grains.angular_velocity.empty())
       (*angular_velocity_)[i] = grains.angular_velocity[i];
     (*species_)[i] = s;
+    assign_shape(i);
     assign_mass(i);
   }
+}
+
+// In runs with superquadrics, grain i's half-axes and true volume (a sphere's: its radius thrice
+// and its ball's volume), for the analyses and the frames (docs/dem.md, "Drawing superquadric
+// grains in ParaView"; docs/mixing.md, "Packing fraction").
+void DemSolver::assign_shape(std::size_t i) {
+  if (!half_axes_)
+    return;
+  const Superquadric* shape = shapes_[(*species_)[i]];
+  (*half_axes_)[i] = shape ? shape->half_axes() : Vec3::Constant((*radius_)[i]);
+  (*volume_)[i] = shape ? shape->volume() : sphere_volume((*radius_)[i]);
 }
 
 // The mass of grain i's species and shape, and for a superquadric its angular momentum from its
@@ -409,7 +426,14 @@ DemSolver::ContactLoad DemSolver::load_of(const Contact& c, Vec3& spring, Vec3& 
 void DemSolver::set_species(std::size_t i, int species) {
   (*species_)[i] = species;
   store_.tag()[i] = species;
+  assign_shape(i);
   assign_mass(i);
+}
+
+std::vector<FrameArray> DemSolver::frame_arrays() {
+  if (!glyphs_)
+    return {};
+  return glyphs_->update(store_, shapes_);
 }
 
 void DemSolver::record_settling(double time, double kinetic_energy_per_grain) {

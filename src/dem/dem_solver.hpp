@@ -13,6 +13,7 @@
 #include "dem/config.hpp"
 #include "dem/contact_history.hpp"
 #include "dem/ellipsoid_contact.hpp"
+#include "dem/grain_glyphs.hpp"
 #include "dem/normal_contact.hpp"
 #include "dem/pair_list.hpp"
 #include "dem/rigid_rotation.hpp"
@@ -26,9 +27,10 @@ namespace partimix::dem {
 class DemSolver final : public Solver {
  public:
   // Fills `store` (empty) with `grains` as particles of kind grain, adds the fields radius,
-  // species, angular_velocity, force, torque and the orientation quaternion, and sets the
-  // masses from the species' densities. Throws InputError (key path "dem...") when the
-  // configuration cannot be used.
+  // species, angular_velocity, force, torque and the orientation quaternion (and, when a
+  // species has a shape, angular_momentum, half_axes and volume), and sets the masses from the
+  // species' densities. Throws InputError (key path "dem...") when the configuration cannot be
+  // used.
   DemSolver(ParticleStore& store, const Domain& domain, const Config& config, const Vec3& gravity,
             const Grains& grains);
 
@@ -40,6 +42,9 @@ class DemSolver final : public Solver {
   std::map<std::string, double> derived_parameters() const override;
   void save(StateArchive& archive, const std::string& prefix) const override;
   void restore(const StateArchive& archive, const std::string& prefix) override;
+  // With superquadric species, the grains' glyph arrays for ParaView (dem/grain_glyphs.hpp);
+  // none for spheres only.
+  std::vector<FrameArray> frame_arrays() override;
 
   // While frozen the walls stay where their motions put them at t = 0 (settling).
   void freeze_walls(bool frozen) { walls_frozen_ = frozen; }
@@ -83,6 +88,7 @@ class DemSolver final : public Solver {
   void refuse_faceted_walls_for_shapes() const;
   void add_fields(const Grains& grains);
   void assign_mass(std::size_t i);
+  void assign_shape(std::size_t i);
   void make_walls();
   void compute_time_step();
   void half_kick(double dt);
@@ -137,6 +143,9 @@ class DemSolver final : public Solver {
   std::vector<const Superquadric*> shapes_;
   std::vector<std::optional<RigidRotor>> rotors_;
   std::vector<Vec3>* angular_momentum_ = nullptr;  // world frame; runs with superquadrics only
+  std::vector<Vec3>* half_axes_ = nullptr;         // body frame; runs with superquadrics only
+  std::vector<double>* volume_ = nullptr;          // runs with superquadrics only
+  std::unique_ptr<GrainGlyphs> glyphs_;            // runs with superquadrics only
   struct GrainFrame {
     Mat3 rotation;
     Mat3 inverse_shape;

@@ -15,9 +15,10 @@
 namespace partimix::io {
 namespace {
 
-const std::vector<std::string> kTypes{
-    "front_position",   "body_loads",      "power_number",   "mixing",         "packing_fraction",
-    "velocity_profile", "angle_of_repose", "mass_in_region", "height_profile", "mass_flux"};
+const std::vector<std::string> kTypes{"front_position",  "body_loads",       "power_number",
+                                      "mixing",          "packing_fraction", "velocity_profile",
+                                      "angle_of_repose", "mass_in_region",   "height_profile",
+                                      "mass_flux",       "orientation_order"};
 
 constexpr int kMostBins = 1000;  // of a profile: one series.csv column each
 
@@ -227,6 +228,41 @@ void read_height_profile(Reader& item, AnalysisSpec& analysis, int dimensions) {
   check_bins(item, line.bins);
 }
 
+// orientation_order: the reference direction (the word velocity, the default, or a direction)
+// and, with the velocity, min_speed. Refused for a method without grains that have an axis.
+void read_orientation_order(Reader& item, AnalysisSpec& analysis, int dimensions,
+                            const MethodSection& section) {
+  if (!section.has_grain_axes()) {
+    throw item.error("type", fmt::format("the orientation order needs grains with an axis: a dem "
+                                         "species whose shape has unequal half-axes "
+                                         "(spheres have none); method {} has none",
+                                         analysis.method));
+  }
+  analysis::OrientationReference& reference = analysis.orientation;
+  reference.velocity = true;
+  try {
+    item.choice("direction", "velocity", {"velocity"});  // absent: the velocity
+  } catch (const InputError&) {
+    reference.velocity = false;  // not the word velocity: a direction, or an error
+  }
+  if (reference.velocity) {
+    reference.min_speed = item.optional<double>("min_speed", 0.0, kNonNegative);
+    return;
+  }
+  const std::string expected = fmt::format(
+      "expected the word velocity or a direction (a list of {} numbers, not all zero)", dimensions);
+  try {
+    reference.direction = item.vector("direction", dimensions);
+  } catch (const InputError&) {
+    throw item.error("direction", expected);
+  }
+  if (!(reference.direction.norm() > 0.0))
+    throw item.error("direction", expected);
+  if (item.contains("min_speed"))
+    throw item.error("min_speed", "applies with direction: velocity only");
+  reference.direction.normalize();
+}
+
 // The method whose particles the analysis measures: `method`, by default the first of the case.
 const MethodSection& read_method(Reader& item, AnalysisSpec& analysis, const Case& the_case) {
   std::vector<std::string> names;
@@ -301,6 +337,8 @@ void read_type_keys(Reader& item, AnalysisSpec& analysis, const Case& the_case,
     read_mass_flux(item, analysis, dimensions);
   if (analysis.type == "height_profile")
     read_height_profile(item, analysis, dimensions);
+  if (analysis.type == "orientation_order")
+    read_orientation_order(item, analysis, dimensions, section);
 }
 
 }  // namespace

@@ -74,8 +74,9 @@ struct OutputSpec {
 // front_position: the largest coordinate of any fluid particle along `axis` (dam break).
 // body_loads, power_number: the load on wall `body` and its power and Reynolds numbers
 // (docs/power.md). mixing: uniformity and Lacey indices of the tracer (docs/mixing.md).
-// packing_fraction, velocity_profile, angle_of_repose, mass_in_region, height_profile:
-// measurements of a granular bed (docs/mixing.md, "Measurements of a granular bed").
+// packing_fraction, velocity_profile, angle_of_repose, mass_in_region, height_profile,
+// orientation_order: measurements of a granular bed (docs/mixing.md, "Measurements of a
+// granular bed").
 struct AnalysisSpec {
   std::string type;
   std::string key;   // where it is in the case: "analyses[i]"
@@ -93,12 +94,13 @@ struct AnalysisSpec {
   double diameter = 0.0;
   double metzner_otto = 7.54;
   analysis::MixingRegion mixing;
-  analysis::PackingBox packing;      // packing_fraction
-  analysis::ProfileLine profile;     // velocity_profile
-  analysis::ReposeSection repose;    // angle_of_repose
-  analysis::MassRegion region_mass;  // mass_in_region
-  analysis::FluxPlane flux;          // mass_flux
-  analysis::HeightLine height;       // height_profile
+  analysis::PackingBox packing;                // packing_fraction
+  analysis::ProfileLine profile;               // velocity_profile
+  analysis::ReposeSection repose;              // angle_of_repose
+  analysis::MassRegion region_mass;            // mass_in_region
+  analysis::FluxPlane flux;                    // mass_flux
+  analysis::HeightLine height;                 // height_profile
+  analysis::OrientationReference orientation;  // orientation_order
 };
 
 // What a method read from its own sections of the case file. Each method derives its own type;
@@ -110,6 +112,9 @@ class MethodSection {
   virtual bool has_tracer() const = 0;
   // The fluid's scales for Reynolds numbers, when the material is a fluid that has them.
   virtual std::optional<materials::FlowScales> flow_scales() const { return std::nullopt; }
+  // Whether some grains have an axis, for the orientation order (superquadric grains whose
+  // half-axes are not all equal; docs/mixing.md, "Orientation order").
+  virtual bool has_grain_axes() const { return false; }
 };
 
 // One method of the case: its name in the method registry, its sections, and how many steps it

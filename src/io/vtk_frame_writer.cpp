@@ -10,6 +10,7 @@
 #include <iterator>
 #include <numeric>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -80,7 +81,23 @@ void add_output_fields(std::vector<AppendedArray>& arrays, const std::deque<Fiel
   }
 }
 
-Frame describe_frame(const ParticleStore& store, const double& time) {
+void add_frame_arrays(std::vector<AppendedArray>& arrays, std::span<const FrameArray> extra,
+                      std::size_t points) {
+  for (const FrameArray& array : extra) {
+    if (array.components < 1 ||
+        array.values.size() != points * static_cast<std::size_t>(array.components)) {
+      throw std::invalid_argument(
+          fmt::format("frame array '{}' holds {} values, not {} components for {} points",
+                      array.name, array.values.size(), array.components, points));
+    }
+    AppendedArray appended = raw_array(array.name, "Float64", array.components, array.values);
+    appended.tuples = points;
+    arrays.push_back(std::move(appended));
+  }
+}
+
+Frame describe_frame(const ParticleStore& store, const double& time,
+                     std::span<const FrameArray> extra) {
   Frame frame;
   frame.points = store.size();
   frame.field_data.push_back(
@@ -89,6 +106,7 @@ Frame describe_frame(const ParticleStore& store, const double& time) {
   add_output_fields(frame.point_data, store.vector_fields(), "Float64", 3);
   add_output_fields(frame.point_data, store.integer_fields(), "Int32", 1);
   add_output_fields(frame.point_data, store.id_fields(), "Int64", 1);
+  add_frame_arrays(frame.point_data, extra, frame.points);
   frame.coordinates.push_back(
       raw_array("Points", "Float64", 3, std::span<const Vec3>(store.position())));
   frame.verts.push_back(counting_array("connectivity", frame.points, 0));
@@ -155,8 +173,9 @@ void write_frame(std::ostream& out, const Frame& frame) {
 
 }  // namespace
 
-void write_vtp_frame(const std::filesystem::path& file, const ParticleStore& store, double time) {
-  const Frame frame = describe_frame(store, time);
+void write_vtp_frame(const std::filesystem::path& file, const ParticleStore& store, double time,
+                     std::span<const FrameArray> extra) {
+  const Frame frame = describe_frame(store, time, extra);
   write_atomically(file, [&frame](std::ostream& out) { write_frame(out, frame); });
 }
 

@@ -5,9 +5,11 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/state_archive.hpp"
 #include "particles/domain.hpp"
+#include "particles/frame_array.hpp"
 #include "particles/particle_store.hpp"
 
 namespace partimix {
@@ -28,6 +30,9 @@ class Solver {
   // state. Analyses of body loads call it before sampling; a solver without bodies leaves the
   // fields absent.
   virtual void update_body_forces() {}
+  // Arrays that a frame carries beside the store's output fields, computed from the current
+  // state when a frame is written, never in a step (particles/frame_array.hpp). None by default.
+  virtual std::vector<FrameArray> frame_arrays() { return {}; }
   // The method's full state for a checkpoint, under `prefix` ("methods/sph/"): its particles'
   // fields (particles/store_state.hpp) and whatever else its next step reads (contact
   // histories, its time and step count, the inputs of its time step). After restore() the

@@ -2,7 +2,9 @@
 // lattice of spacing d fill pi/6 of a box whose faces lie midway between lattice planes; a box
 // whose faces pass through centres counts those spheres whole (the centre-in-box rule); discs on
 // a square lattice in 2D fill pi/4; wall particles and particles outside do not count; no
-// radius field is a RunError.
+// radius field is a RunError. Blocky superquadric grains (n1 = 4, n2 = 6) placed by the DEM
+// solver on a lattice, turned at random, fill N V / V_box with V their true volume (to 1e-12),
+// not the volume of their bounding spheres (the field radius).
 #include "analysis/packing_fraction.hpp"
 
 #include <gtest/gtest.h>
@@ -14,7 +16,10 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "core/error.hpp"
+#include "dem/dem_solver.hpp"
 #include "load_fixtures.hpp"
 
 namespace partimix::analysis {
@@ -73,6 +78,37 @@ TEST(PackingFraction, SquareLatticeOfDiscsIn2D) {
   lattice(store, 5, true);
   PackingFraction packing(box(0.0, 5 * kSpacing, true));
   EXPECT_NEAR(sample_once(packing, store, 0.0)[0], kPi / 4.0, 1e-12);
+}
+
+TEST(PackingFraction, SuperquadricGrainsCountTheirTrueVolume) {
+  // 4 x 4 x 4 grains of half-axes 1, 1.5, 2 mm at the centres of cells of 5 mm.
+  const dem::Superquadric blocky(Vec3(1.0e-3, 1.5e-3, 2.0e-3), 4.0, 6.0);
+  dem::Config config;
+  config.species = {dem::Species{"blocky", 2500.0, {1.0e7, 0.3}, blocky}};
+  config.particle_interactions = {dem::Interaction{}};
+  config.wall_interactions = {dem::Interaction{}};
+  constexpr int kSide = 4;
+  constexpr double kCell = 5.0e-3;
+  dem::Grains grains;
+  for (int n = 0; n < kSide * kSide * kSide; ++n) {
+    grains.position.push_back(
+        kCell * Vec3(n % kSide + 0.5, n / kSide % kSide + 0.5, n / (kSide * kSide) + 0.5));
+    grains.radius.push_back(0.0);
+    grains.species.push_back(0);
+    grains.orientation.push_back(Eigen::Quaterniond(
+        Eigen::AngleAxisd(0.37 * n, Vec3(std::sin(n), std::cos(n), 0.5).normalized())));
+  }
+  Domain domain;
+  domain.lo = Vec3::Constant(-0.01);
+  domain.hi = Vec3::Constant(0.03);
+  ParticleStore store;
+  const dem::DemSolver solver(store, domain, config, Vec3::Zero(), grains);
+  PackingFraction packing(box(0.0, kSide * kCell));
+  const double box_volume = std::pow(kSide * kCell, 3);
+  const double expected = kSide * kSide * kSide * blocky.volume() / box_volume;
+  EXPECT_NEAR(sample_once(packing, store, 0.0)[0], expected, 1e-12 * expected);
+  const double bounding = 4.0 / 3.0 * kPi * std::pow(blocky.bounding_radius(), 3);
+  EXPECT_GT(bounding, 4.0 * blocky.volume());  // what the radius field would have given
 }
 
 TEST(PackingFraction, NoRadiusFieldIsARunError) {

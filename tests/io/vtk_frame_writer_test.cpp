@@ -8,6 +8,7 @@
 #include <cstring>
 #include <map>
 #include <regex>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -221,6 +222,49 @@ TEST(VtkFrameWriter, BinaryValuesRoundTripExactly) {
   EXPECT_EQ(decode<std::int32_t>(frame, "tag"), store.tag());
   EXPECT_EQ(decode<std::int64_t>(frame, "connectivity"), (std::vector<std::int64_t>{0, 1, 2}));
   EXPECT_EQ(decode<std::int64_t>(frame, "offsets"), (std::vector<std::int64_t>{1, 2, 3}));
+}
+
+TEST(VtkFrameWriter, FrameArraysFollowTheFieldsWithTheirComponents) {
+  TempDir dir;
+  ParticleStore store;
+  fill_store(store);
+  std::vector<double> tensor(27);
+  std::vector<double> pair{2.0, 2.0, 4.0, 6.0, 2.0, 10.0};
+  for (std::size_t k = 0; k < tensor.size(); ++k)
+    tensor[k] = 0.5 * static_cast<double>(k);
+  const std::vector<FrameArray> extra{{"shape_tensor", 9, tensor}, {"blockiness", 2, pair}};
+  write_vtp_frame(dir / "frame.vtp", store, 0.0, extra);
+  const ParsedFrame frame = parse_frame(read_file(dir / "frame.vtp"));
+  std::vector<std::string> point_data;
+  for (const auto& array : frame.arrays) {
+    if (array.section == "PointData")
+      point_data.push_back(array.attributes.at("Name"));
+  }
+  EXPECT_EQ(point_data, (std::vector<std::string>{"pressure", "velocity", "kind", "tag", "id",
+                                                  "shape_tensor", "blockiness"}));
+  EXPECT_EQ(find_array(frame, "shape_tensor").attributes.at("NumberOfComponents"), "9");
+  EXPECT_EQ(find_array(frame, "blockiness").attributes.at("NumberOfComponents"), "2");
+  EXPECT_EQ(decode<double>(frame, "shape_tensor"), tensor);
+  EXPECT_EQ(decode<double>(frame, "blockiness"), pair);
+  expect_offsets_tile_block(frame, 3);
+}
+
+TEST(VtkFrameWriter, NoFrameArraysWriteTheFieldsAlone) {
+  TempDir dir;
+  ParticleStore store;
+  fill_store(store);
+  write_vtp_frame(dir / "plain.vtp", store, 0.25);
+  write_vtp_frame(dir / "none.vtp", store, 0.25, std::vector<FrameArray>{});
+  EXPECT_EQ(read_file(dir / "plain.vtp"), read_file(dir / "none.vtp"));
+}
+
+TEST(VtkFrameWriter, AFrameArrayOfTheWrongSizeIsRefused) {
+  TempDir dir;
+  ParticleStore store;
+  fill_store(store);
+  const std::vector<double> short_of_one(8);
+  const std::vector<FrameArray> extra{{"orientation", 3, short_of_one}};
+  EXPECT_THROW(write_vtp_frame(dir / "frame.vtp", store, 0.0, extra), std::invalid_argument);
 }
 
 TEST(VtkFrameWriter, LongConnectivitySpansSeveralBufferChunks) {
