@@ -5,8 +5,10 @@
 // Each pair of grains is evaluated once from a neighbour list with a skin; each grain then
 // gathers its pairs' loads in a fixed order (DESIGN.md, "Data and speed"), so the result does
 // not depend on the thread count.
+#include <array>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -17,6 +19,7 @@
 #include "dem/rigid_rotation.hpp"
 #include "dem/rolling_resistance.hpp"
 #include "geometry/motion.hpp"
+#include "geometry/surface.hpp"
 #include "particles/cell_grid.hpp"
 #include "particles/solver.hpp"
 
@@ -59,6 +62,7 @@ class DemSolver final : public Solver {
     const geometry::Surface* surface = nullptr;
     std::unique_ptr<geometry::Motion> motion;
     geometry::RigidPose pose;
+    int max_contacts = 1;  // per grain, at most geometry::kMaxSurfaceContacts
   };
   // One contact as particle i sees it: unit normal n from the partner to i, overlap, the
   // relative velocity of the contact point, and the pair's properties.
@@ -78,8 +82,16 @@ class DemSolver final : public Solver {
     Vec3 tangential;
     Vec3 rolling;
   };
+  // A grain's contact with one face of a wall: the contact, the arm from the centre to the
+  // contact point and the face.
+  struct WallTouch {
+    Contact contact;
+    Vec3 arm = Vec3::Zero();
+    int face = 0;
+  };
+  using WallTouches = std::array<WallTouch, geometry::kMaxSurfaceContacts>;
+  using WallSlots = std::array<int, geometry::kMaxSurfaceContacts>;
 
-  void refuse_faceted_walls_for_shapes() const;
   void add_fields(const Grains& grains);
   void assign_mass(std::size_t i);
   void make_walls();
@@ -93,11 +105,15 @@ class DemSolver final : public Solver {
   int pair_loads(std::size_t k, double dt);
   int shaped_pair_loads(std::size_t k, const Vec3& rij, double dt);
   bool wall_loads(std::size_t i, double dt, int& failures);
-  // Grain i against wall w: the normal, overlap, velocity of the contact point and the arm from
-  // the centre to it; false when they are apart.
-  bool sphere_wall_contact(std::size_t i, std::size_t w, Contact& c, Vec3& arm) const;
-  bool shaped_wall_contact(std::size_t i, std::size_t w, Contact& c, Vec3& arm,
-                           int& failures) const;
+  // Grain i against the faces of wall w: per touching face the normal, overlap, velocity of the
+  // contact point and the arm from the centre to it; returns their number.
+  int sphere_wall_contacts(std::size_t i, std::size_t w, WallTouches& out) const;
+  int shaped_wall_contacts(std::size_t i, std::size_t w, WallTouches& out, int& failures) const;
+  // The history slots of grain i's `count` contacts with wall w (-1 where none is left), their
+  // bits set in `touched`; false when a slot was missing.
+  bool claim_wall_slots(std::size_t i, std::size_t w, const WallTouches& touches, int count,
+                        WallSlots& slots, std::uint64_t& touched);
+  int ended_wall_slot(std::size_t i, std::size_t w, std::uint64_t touched) const;
   // The radius of the Hertz law: the grain's, or its shape's volume-equivalent radius.
   double hertz_radius(std::size_t i) const;
   Quaternion orientation(std::size_t i) const;
