@@ -338,7 +338,10 @@ bool DemSolver::wall_loads(std::size_t i, double dt, int& failures) {
     for (int k = 0; k < count; ++k) {
       if (slots[k] < 0)
         continue;
-      Contact& c = touches[k].contact;
+      Contact c;
+      c.normal = touches[k].normal;
+      c.overlap = touches[k].overlap;
+      c.contact_velocity = touches[k].contact_velocity;
       c.relative_angular_velocity = (*angular_velocity_)[i] - walls_[w].pose.angular_velocity;
       c.pair = pair_properties(wall_materials_[w * config_.species.size() + s_i], radius,
                                std::numeric_limits<double>::infinity(), m[i],
@@ -410,14 +413,13 @@ int DemSolver::sphere_wall_contacts(std::size_t i, std::size_t w, WallTouches& o
     if (surface.gap >= radius)
       continue;
     WallTouch& touch = out[count++];
-    Contact& c = touch.contact;
-    c.normal = pose.rotation * surface.normal;
-    c.overlap = radius - surface.gap;
+    touch.normal = pose.rotation * surface.normal;
+    touch.overlap = radius - surface.gap;
     const Vec3 point = pose.place(surface.point);
-    const double lever = radius - 0.5 * c.overlap;
-    c.contact_velocity = store_.velocity()[i] - pose.velocity_at(point) -
-                         lever * (*angular_velocity_)[i].cross(c.normal);
-    touch.arm = -lever * c.normal;
+    const double lever = radius - 0.5 * touch.overlap;
+    touch.contact_velocity = store_.velocity()[i] - pose.velocity_at(point) -
+                             lever * (*angular_velocity_)[i].cross(touch.normal);
+    touch.arm = -lever * touch.normal;
     touch.face = surface.face;
   }
   return count;

@@ -82,12 +82,15 @@ class DemSolver final : public Solver {
     Vec3 tangential;
     Vec3 rolling;
   };
-  // A grain's contact with one face of a wall: the contact, the arm from the centre to the
-  // contact point and the face.
+  // A grain's contact with one face of a wall: the unit normal from the wall to the grain, the
+  // overlap, the relative velocity of the contact point, the arm from the centre to it and the
+  // face. No initialisers: a step fills an array of them per wall and grain.
   struct WallTouch {
-    Contact contact;
-    Vec3 arm = Vec3::Zero();
-    int face = 0;
+    Vec3 normal;
+    double overlap;
+    Vec3 contact_velocity;
+    Vec3 arm;
+    int face;
   };
   using WallTouches = std::array<WallTouch, geometry::kMaxSurfaceContacts>;
   using WallSlots = std::array<int, geometry::kMaxSurfaceContacts>;

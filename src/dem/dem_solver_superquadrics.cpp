@@ -81,12 +81,11 @@ int DemSolver::shaped_wall_contacts(std::size_t i, std::size_t w, WallTouches& o
       std::span(found.data(), static_cast<std::size_t>(walls_[w].max_contacts)), failures);
   for (int k = 0; k < count; ++k) {
     WallTouch& touch = out[k];
-    Contact& c = touch.contact;
-    c.normal = pose.rotation * found[k].normal;
-    c.overlap = found[k].overlap;
+    touch.normal = pose.rotation * found[k].normal;
+    touch.overlap = found[k].overlap;
     const Vec3 point = pose.place(found[k].point);
     touch.arm = point - x;
-    c.contact_velocity =
+    touch.contact_velocity =
         store_.velocity()[i] + (*angular_velocity_)[i].cross(touch.arm) - pose.velocity_at(point);
     touch.face = found[k].wall.face;
   }

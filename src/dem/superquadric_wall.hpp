@@ -27,11 +27,13 @@ WallContact superquadric_face_contact(const Superquadric& shape, const Vec3& cen
                                       const Mat3& rotation, const geometry::Surface& surface,
                                       int face = 0);
 
+// The most faces of one wall looked at for one grain.
+inline constexpr int kFaceCandidates = 64;
+
 // The same grain against every face of `surface` within its bounding radius (at most
 // kFaceCandidates, the nearest): the touching contacts, deepest first, at most out.size();
 // returns their number and adds the faces whose iteration did not converge to `failures`.
 // No allocation.
-inline constexpr int kFaceCandidates = 64;
 int superquadric_wall_contacts(const Superquadric& shape, const Vec3& centre, const Mat3& rotation,
                                const geometry::Surface& surface, std::span<WallContact> out,
                                int& failures);
