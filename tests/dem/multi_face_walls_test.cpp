@@ -2,11 +2,11 @@
 // faces"):
 // - a sphere settling under gravity into the concave 90-degree corner of a mesh (triangles half
 //   its radius) and of a box container touches both faces and comes to rest: the wall forces
-//   balance its weight to 1e-6 (relative). With one contact per wall (the nearer face only) the
-//   other face gave no force and the sphere sank through it.
+//   balance its weight to 1e-6 (relative; measured 1.3e-16 and 0). With one contact per wall
+//   (the nearer face only) it keeps one contact and does not come to rest.
 // - a sphere rolling down an incline made of a mesh of small triangles moves as on a plane: its
 //   springs pass from triangle to triangle, so the distance after 0.2 s equals the plane's to
-//   1e-9 (relative); without the hand-over the spring restarts at each triangle.
+//   1e-9 (relative; measured 0); restarting the springs at each triangle leaves it 8.1e-5 off.
 // - spheres rolling over a mesh and into the corner of a box container give the same result on
 //   one and two threads, and resumed from a checkpoint, bit for bit.
 #include <fmt/format.h>
