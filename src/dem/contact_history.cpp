@@ -14,13 +14,21 @@ ContactHistory::ContactHistory(std::size_t particles, int capacity) : capacity_(
   counts_.assign(particles, 0);
 }
 
-int ContactHistory::find_or_add(std::size_t i, std::int64_t partner) {
-  ContactSlot* first = &slots_[i * capacity_];
-  const int count = counts_[i];
-  for (int k = 0; k < count; ++k) {
+int ContactHistory::find(std::size_t i, std::int64_t partner) const {
+  const ContactSlot* first = &slots_[i * capacity_];
+  for (int k = 0; k < counts_[i]; ++k) {
     if (first[k].partner == partner)
       return k;
   }
+  return -1;
+}
+
+int ContactHistory::find_or_add(std::size_t i, std::int64_t partner) {
+  const int found = find(i, partner);
+  if (found >= 0)
+    return found;
+  ContactSlot* first = &slots_[i * capacity_];
+  const int count = counts_[i];
   if (count == capacity_)
     return -1;
   first[count] = ContactSlot{partner, Vec3::Zero(), Vec3::Zero()};

@@ -2,7 +2,9 @@
 // The history of each particle's wall contacts (docs/dem.md, "Tangential force"): the tangential
 // and rolling springs of every contact, kept per particle in a fixed number of slots so that a
 // step does not allocate (the pairs of grains keep theirs in the PairList). A contact is known
-// by its partner: a particle id (>= 0) or a wall, -(wall index + 1).
+// by its partner: a particle id (>= 0) or a face of a wall, -(1 + wall + 2^32 face) (face 0 is
+// -(wall index + 1), what a wall was before its faces had contacts of their own, so that older
+// checkpoints keep their meaning; docs/dem.md, "Walls of several faces").
 #include <cstdint>
 #include <span>
 #include <string>
@@ -26,8 +28,13 @@ class ContactHistory {
   // Throws std::invalid_argument unless 1 <= capacity <= kMaxCapacity.
   ContactHistory(std::size_t particles, int capacity);
 
-  static std::int64_t wall_partner(std::size_t wall) {
-    return -static_cast<std::int64_t>(wall) - 1;
+  // wall < 2^32, 0 <= face < 2^31.
+  static std::int64_t wall_partner(std::size_t wall, int face = 0) {
+    return -static_cast<std::int64_t>(wall) - 1 - (static_cast<std::int64_t>(face) << 32);
+  }
+  // The wall of a wall partner.
+  static std::size_t wall_of(std::int64_t partner) {
+    return static_cast<std::size_t>((-(partner + 1)) & 0xFFFFFFFF);
   }
 
   int capacity() const { return capacity_; }
@@ -36,7 +43,10 @@ class ContactHistory {
   // The slot of i's contact with `partner`, a new zeroed one when there is none; -1 when i's
   // slots are full.
   int find_or_add(std::size_t i, std::int64_t partner);
+  // The slot of i's contact with `partner`; -1 when there is none.
+  int find(std::size_t i, std::int64_t partner) const;
   ContactSlot& slot(std::size_t i, int k) { return slots_[i * capacity_ + k]; }
+  const ContactSlot& slot(std::size_t i, int k) const { return slots_[i * capacity_ + k]; }
 
   // Keeps the slots k of i with bit k of `touched` set (the contacts of this step), in order.
   void retain(std::size_t i, std::uint64_t touched);

@@ -24,9 +24,13 @@ double sphere_volume(double radius) {
   return 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
 }
 
-// Slots for the wall contacts of one grain: one per wall (at most the history's capacity).
-int wall_slots(std::size_t walls) {
-  return static_cast<int>(std::clamp<std::size_t>(walls, 1, ContactHistory::kMaxCapacity));
+// Slots for the wall contacts of one grain: each wall's most contacts (at most the history's
+// capacity).
+int wall_slots(const std::vector<WallConfig>& walls) {
+  std::size_t slots = 0;
+  for (const WallConfig& wall : walls)
+    slots += static_cast<std::size_t>(wall.surface->max_contacts());
+  return static_cast<int>(std::clamp<std::size_t>(slots, 1, ContactHistory::kMaxCapacity));
 }
 
 bool any_shaped(const std::vector<const Superquadric*>& shapes) {
@@ -63,7 +67,6 @@ DemSolver::DemSolver(ParticleStore& store, const Domain& domain, const Config& c
     if (species.shape)
       rotors_.back().emplace(species.density * species.shape->unit_inertia());
   }
-  refuse_faceted_walls_for_shapes();
   add_fields(grains);
   make_walls();
   compute_time_step();
@@ -71,24 +74,9 @@ DemSolver::DemSolver(ParticleStore& store, const Domain& domain, const Config& c
   const double skin = config_.neighbour_skin * largest_radius_;
   grid_ = std::make_unique<CellGrid>(domain_, 2.0 * largest_radius_ + skin);
   pairs_ = std::make_unique<PairList>(skin);
-  wall_history_ = std::make_unique<ContactHistory>(store_.size(), wall_slots(config_.walls.size()));
+  wall_history_ = std::make_unique<ContactHistory>(store_.size(), wall_slots(config_.walls));
   sort_by_cell();
   compute_loads(0.0);
-}
-
-// Superquadrics meet walls of one smooth face only, until walls of several faces give a contact
-// per face (docs/dem.md, "Walls and superquadrics").
-void DemSolver::refuse_faceted_walls_for_shapes() const {
-  if (!any_shaped(shapes_))
-    return;
-  for (std::size_t w = 0; w < config_.walls.size(); ++w) {
-    if (!config_.walls[w].surface->single_face()) {
-      throw config_error(fmt::format("walls[{}].shape", w),
-                         "superquadric grains meet plane, drum and cone walls only for now: a "
-                         "wall of several faces (box, vessel, mesh) gives one contact per wall, "
-                         "which a long grain lying in a corner defeats; build it from planes");
-    }
-  }
 }
 
 void DemSolver::add_fields(const Grains& grains) {
@@ -189,7 +177,8 @@ void DemSolver::make_walls() {
       throw config_error(fmt::format("walls[{}].motion.type", w),
                          "unknown motion '" + wall.motion.type + "'");
     }
-    walls_.push_back({wall.surface.get(), std::move(motion), {}});
+    const int max_contacts = std::min(wall.surface->max_contacts(), geometry::kMaxSurfaceContacts);
+    walls_.push_back({wall.surface.get(), std::move(motion), {}, max_contacts});
     walls_.back().pose = at_rest(walls_.back().motion->pose(0.0));
     for (std::size_t a = 0; a < n; ++a) {
       wall_materials_.push_back(material_pair(config_.species[a].material, wall.material,
@@ -300,7 +289,7 @@ void DemSolver::compute_loads(double dt) {
   contact_failures_ += failures;
   if (overflow) {
     throw RunError(
-        fmt::format("a grain touches more than {} walls at once (the slots of its "
+        fmt::format("a grain touches more than {} wall faces at once (the slots of its "
                     "wall contact history)",
                     wall_history_->capacity()));
   }
@@ -348,8 +337,8 @@ int DemSolver::pair_loads(std::size_t k, double dt) {
   return 0;
 }
 
-// The wall contacts of grain i; false when its wall history has no slot left.
-// The wall contacts of grain i; false when its wall history has no slot left.
+// The wall contacts of grain i, one per touching face of each wall; false when its wall
+// history has no slot left.
 bool DemSolver::wall_loads(std::size_t i, double dt, int& failures) {
   const auto& m = store_.mass();
   const int s_i = (*species_)[i];
@@ -358,51 +347,104 @@ bool DemSolver::wall_loads(std::size_t i, double dt, int& failures) {
   std::uint64_t touched = 0;
   bool fits = true;
   for (std::size_t w = 0; w < walls_.size(); ++w) {
-    Contact c;
-    Vec3 arm;  // from the centre to the contact point
-    if (!(shaped ? shaped_wall_contact(i, w, c, arm, failures) : sphere_wall_contact(i, w, c, arm)))
+    WallTouches touches;
+    const int count = shaped ? shaped_wall_contacts(i, w, touches, failures)
+                             : sphere_wall_contacts(i, w, touches);
+    if (count == 0)
       continue;
-    const int slot = wall_history_->find_or_add(i, ContactHistory::wall_partner(w));
-    if (slot < 0) {
-      fits = false;
-      continue;
+    WallSlots slots;
+    fits = claim_wall_slots(i, w, touches, count, slots, touched) && fits;
+    for (int k = 0; k < count; ++k) {
+      if (slots[k] < 0)
+        continue;
+      Contact c;
+      c.normal = touches[k].normal;
+      c.overlap = touches[k].overlap;
+      c.contact_velocity = touches[k].contact_velocity;
+      c.relative_angular_velocity = (*angular_velocity_)[i] - walls_[w].pose.angular_velocity;
+      // The grain's own surface point: the deepest point into the face (docs/dem.md).
+      const double contact =
+          shaped ? contact_radius(i, touches[k].arm - 0.5 * c.overlap * c.normal) : radius;
+      c.pair = pair_properties(wall_materials_[w * config_.species.size() + s_i], contact,
+                               std::numeric_limits<double>::infinity(), m[i],
+                               std::numeric_limits<double>::infinity());
+      c.interaction = &config_.wall_interaction(w, static_cast<std::size_t>(s_i));
+      c.rolling_inertia = 1.4 * m[i] * radius * radius;
+      ContactSlot& history = wall_history_->slot(i, slots[k]);
+      const ContactLoad load = load_of(c, history.spring, history.rolling_spring, dt);
+      (*force_)[i] += load.force;
+      // A sphere's normal force passes through its centre.
+      (*torque_)[i] += touches[k].arm.cross(shaped ? load.force : load.tangential) + load.rolling;
     }
-    touched |= std::uint64_t{1} << slot;
-    c.relative_angular_velocity = (*angular_velocity_)[i] - walls_[w].pose.angular_velocity;
-    // The grain's own surface point: the deepest point into the wall (docs/dem.md).
-    const double contact = shaped ? contact_radius(i, arm - 0.5 * c.overlap * c.normal) : radius;
-    c.pair = pair_properties(wall_materials_[w * config_.species.size() + s_i], contact,
-                             std::numeric_limits<double>::infinity(), m[i],
-                             std::numeric_limits<double>::infinity());
-    c.interaction = &config_.wall_interaction(w, static_cast<std::size_t>(s_i));
-    c.rolling_inertia = 1.4 * m[i] * radius * radius;
-    ContactSlot& history = wall_history_->slot(i, slot);
-    const ContactLoad load = load_of(c, history.spring, history.rolling_spring, dt);
-    (*force_)[i] += load.force;
-    // A sphere's normal force passes through its centre.
-    (*torque_)[i] += arm.cross(shaped ? load.force : load.tangential) + load.rolling;
   }
   wall_history_->retain(i, touched);
   return fits;
 }
 
-// Sphere i against wall w: the normal, overlap and contact point's velocity; false apart.
-bool DemSolver::sphere_wall_contact(std::size_t i, std::size_t w, Contact& c, Vec3& arm) const {
+// A contact on the face it touched last step keeps its slot. A new one takes over the slot, and
+// so the springs, of a contact with the same wall that ended this step (the grain moved on from
+// one face to the next, as across the triangles of a flat mesh; docs/dem.md, "Walls of several
+// faces"), the first such in slot order; so a wall holds no more slots than its most contacts.
+bool DemSolver::claim_wall_slots(std::size_t i, std::size_t w, const WallTouches& touches,
+                                 int count, WallSlots& slots, std::uint64_t& touched) {
+  for (int k = 0; k < count; ++k) {
+    slots[k] = wall_history_->find(i, ContactHistory::wall_partner(w, touches[k].face));
+    if (slots[k] >= 0)
+      touched |= std::uint64_t{1} << slots[k];
+  }
+  bool fits = true;
+  for (int k = 0; k < count; ++k) {
+    if (slots[k] >= 0)
+      continue;
+    const std::int64_t partner = ContactHistory::wall_partner(w, touches[k].face);
+    slots[k] = ended_wall_slot(i, w, touched);
+    if (slots[k] >= 0)
+      wall_history_->slot(i, slots[k]).partner = partner;
+    else
+      slots[k] = wall_history_->find_or_add(i, partner);
+    if (slots[k] < 0)
+      fits = false;
+    else
+      touched |= std::uint64_t{1} << slots[k];
+  }
+  return fits;
+}
+
+// The first slot of grain i with wall w not touched this step; -1 when there is none.
+int DemSolver::ended_wall_slot(std::size_t i, std::size_t w, std::uint64_t touched) const {
+  for (int k = 0; k < wall_history_->count(i); ++k) {
+    const std::int64_t partner = wall_history_->slot(i, k).partner;
+    if (!((touched >> k) & 1U) && partner < 0 && ContactHistory::wall_of(partner) == w)
+      return k;
+  }
+  return -1;
+}
+
+// Sphere i against the faces of wall w.
+int DemSolver::sphere_wall_contacts(std::size_t i, std::size_t w, WallTouches& out) const {
   const Vec3& x = store_.position()[i];
   const double radius = (*radius_)[i];
   const geometry::RigidPose& pose = walls_[w].pose;
   const Vec3 local = pose.rotation.transpose() * (x - pose.origin) + pose.start_origin;
-  geometry::SurfacePoint surface;
-  if (!walls_[w].surface->nearest(local, radius, surface) || surface.gap >= radius)
-    return false;
-  c.normal = pose.rotation * surface.normal;
-  c.overlap = radius - surface.gap;
-  const Vec3 point = pose.place(surface.point);
-  const double lever = radius - 0.5 * c.overlap;
-  c.contact_velocity = store_.velocity()[i] - pose.velocity_at(point) -
-                       lever * (*angular_velocity_)[i].cross(c.normal);
-  arm = -lever * c.normal;
-  return true;
+  std::array<geometry::SurfacePoint, geometry::kMaxSurfaceContacts> points;
+  const int found = walls_[w].surface->contacts(
+      local, radius, std::span(points.data(), static_cast<std::size_t>(walls_[w].max_contacts)));
+  int count = 0;
+  for (int k = 0; k < found; ++k) {
+    const geometry::SurfacePoint& surface = points[k];
+    if (surface.gap >= radius)
+      continue;
+    WallTouch& touch = out[count++];
+    touch.normal = pose.rotation * surface.normal;
+    touch.overlap = radius - surface.gap;
+    const Vec3 point = pose.place(surface.point);
+    const double lever = radius - 0.5 * touch.overlap;
+    touch.contact_velocity = store_.velocity()[i] - pose.velocity_at(point) -
+                             lever * (*angular_velocity_)[i].cross(touch.normal);
+    touch.arm = -lever * touch.normal;
+    touch.face = surface.face;
+  }
+  return count;
 }
 
 // The normal, tangential and rolling loads of one contact on particle i (docs/dem.md).

@@ -5,8 +5,10 @@
 // Each pair of grains is evaluated once from a neighbour list with a skin; each grain then
 // gathers its pairs' loads in a fixed order (DESIGN.md, "Data and speed"), so the result does
 // not depend on the thread count.
+#include <array>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -19,6 +21,7 @@
 #include "dem/rigid_rotation.hpp"
 #include "dem/rolling_resistance.hpp"
 #include "geometry/motion.hpp"
+#include "geometry/surface.hpp"
 #include "particles/cell_grid.hpp"
 #include "particles/solver.hpp"
 
@@ -65,6 +68,7 @@ class DemSolver final : public Solver {
     const geometry::Surface* surface = nullptr;
     std::unique_ptr<geometry::Motion> motion;
     geometry::RigidPose pose;
+    int max_contacts = 1;  // per grain, at most geometry::kMaxSurfaceContacts
   };
   // One contact as particle i sees it: unit normal n from the partner to i, overlap, the
   // relative velocity of the contact point, and the pair's properties.
@@ -84,8 +88,19 @@ class DemSolver final : public Solver {
     Vec3 tangential;
     Vec3 rolling;
   };
+  // A grain's contact with one face of a wall: the unit normal from the wall to the grain, the
+  // overlap, the relative velocity of the contact point, the arm from the centre to it and the
+  // face. No initialisers: a step fills an array of them per wall and grain.
+  struct WallTouch {
+    Vec3 normal;
+    double overlap;
+    Vec3 contact_velocity;
+    Vec3 arm;
+    int face;
+  };
+  using WallTouches = std::array<WallTouch, geometry::kMaxSurfaceContacts>;
+  using WallSlots = std::array<int, geometry::kMaxSurfaceContacts>;
 
-  void refuse_faceted_walls_for_shapes() const;
   void add_fields(const Grains& grains);
   void assign_mass(std::size_t i);
   void assign_shape(std::size_t i);
@@ -102,11 +117,15 @@ class DemSolver final : public Solver {
   SuperquadricContact shaped_contact(std::size_t i, std::size_t j, const Vec3& centre_j,
                                      const PairHistory& history) const;
   bool wall_loads(std::size_t i, double dt, int& failures);
-  // Grain i against wall w: the normal, overlap, velocity of the contact point and the arm from
-  // the centre to it; false when they are apart.
-  bool sphere_wall_contact(std::size_t i, std::size_t w, Contact& c, Vec3& arm) const;
-  bool shaped_wall_contact(std::size_t i, std::size_t w, Contact& c, Vec3& arm,
-                           int& failures) const;
+  // Grain i against the faces of wall w: per touching face the normal, overlap, velocity of the
+  // contact point and the arm from the centre to it; returns their number.
+  int sphere_wall_contacts(std::size_t i, std::size_t w, WallTouches& out) const;
+  int shaped_wall_contacts(std::size_t i, std::size_t w, WallTouches& out, int& failures) const;
+  // The history slots of grain i's `count` contacts with wall w (-1 where none is left), their
+  // bits set in `touched`; false when a slot was missing.
+  bool claim_wall_slots(std::size_t i, std::size_t w, const WallTouches& touches, int count,
+                        WallSlots& slots, std::uint64_t& touched);
+  int ended_wall_slot(std::size_t i, std::size_t w, std::uint64_t touched) const;
   // A shaped run's grain frames, set from the orientations before each step's contacts: the
   // rotation (body to world) and, for spheres and ellipsoids, the inverse shape matrix of their
   // contact function (dem/ellipsoid_contact.hpp).

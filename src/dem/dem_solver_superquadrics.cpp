@@ -2,6 +2,7 @@
 // the midway point between two grains (dem/superquadric_contact.hpp), warm-started from the
 // pair's history, and the deepest point into a wall (dem/superquadric_wall.hpp). The forces act
 // at the contact point, so the normal force turns the grains too.
+#include <array>
 #include <limits>
 #include <optional>
 
@@ -114,24 +115,27 @@ int DemSolver::shaped_pair_loads(std::size_t k, const Vec3& rij, double dt) {
   return failures;
 }
 
-bool DemSolver::shaped_wall_contact(std::size_t i, std::size_t w, Contact& c, Vec3& arm,
+int DemSolver::shaped_wall_contacts(std::size_t i, std::size_t w, WallTouches& out,
                                     int& failures) const {
   const Vec3& x = store_.position()[i];
   const geometry::RigidPose& pose = walls_[w].pose;
   const Vec3 local = pose.rotation.transpose() * (x - pose.origin) + pose.start_origin;
   const Mat3 body_to_local = pose.rotation.transpose() * frames_[i].rotation;
-  const WallContact found =
-      superquadric_wall_contact(*shapes_[(*species_)[i]], local, body_to_local, *walls_[w].surface);
-  failures += found.converged ? 0 : 1;
-  if (!found.touching)
-    return false;
-  c.normal = pose.rotation * found.normal;
-  c.overlap = found.overlap;
-  const Vec3 point = pose.place(found.point);
-  arm = point - x;
-  c.contact_velocity =
-      store_.velocity()[i] + (*angular_velocity_)[i].cross(arm) - pose.velocity_at(point);
-  return true;
+  std::array<WallContact, geometry::kMaxSurfaceContacts> found;
+  const int count = superquadric_wall_contacts(
+      *shapes_[(*species_)[i]], local, body_to_local, *walls_[w].surface,
+      std::span(found.data(), static_cast<std::size_t>(walls_[w].max_contacts)), failures);
+  for (int k = 0; k < count; ++k) {
+    WallTouch& touch = out[k];
+    touch.normal = pose.rotation * found[k].normal;
+    touch.overlap = found[k].overlap;
+    const Vec3 point = pose.place(found[k].point);
+    touch.arm = point - x;
+    touch.contact_velocity =
+        store_.velocity()[i] + (*angular_velocity_)[i].cross(touch.arm) - pose.velocity_at(point);
+    touch.face = found[k].wall.face;
+  }
+  return count;
 }
 
 }  // namespace partimix::dem

@@ -17,6 +17,15 @@
 //   the opening from either side, as the cone's rims do).
 // A centre beyond an open face, farther than `reach` from every closed face, feels nothing.
 // False when gap > reach, and always when every face is open.
+//
+// Faces (contacts(), docs/dem.md, "Walls of several faces"): face 2 axis + (side > 0), in the
+// order above. The inside is convex, so every closed face a sphere touches gives a contact of
+// its own. nearest_on_face() treats a face as its plane, extended across its closed edges (a
+// point inside the box, or outside across closed faces: normal = the face's inward normal,
+// gap = the signed distance to the plane), and as a rectangle at its edges with an open face (a
+// point beyond an opening: the nearest point of the rectangle, on its rim, normal from the rim
+// to the point, gap = +distance). A rim contact that is a point of a deeper face's rim too (a
+// corner of the opening) is shadowed by it.
 #include <array>
 #include <vector>
 
@@ -29,9 +38,18 @@ class BoxContainerSurface final : public Surface {
  public:
   BoxContainerSurface(const Vec3& lo, const Vec3& hi, const std::vector<Face>& open_faces);
   bool nearest(const Vec3& centre, double reach, SurfacePoint& out) const override;
+  int contacts(const Vec3& centre, double reach, std::span<SurfacePoint> out) const override;
+  int faces_near(const Vec3& centre, double reach, std::span<int> out) const override;
+  bool nearest_on_face(int face, const Vec3& point, double reach, SurfacePoint& out) const override;
+  bool shadowed(const SurfacePoint& candidate, const SurfacePoint& deeper) const override;
+  // A grain inside a box wider than it touches three faces at most.
+  int max_contacts() const override { return 3; }
 
  private:
   bool crossed(const Vec3& centre) const;
+  // The closed faces' points (nearest_on_face) with gap <= reach; returns their number.
+  int face_points(const Vec3& centre, double reach, std::span<SurfacePoint, 6> out) const;
+  double plane(const Face& face) const { return face.side > 0 ? hi_[face.axis] : lo_[face.axis]; }
 
   Vec3 lo_;
   Vec3 hi_;

@@ -20,7 +20,6 @@ class ConeSurface final : public Surface {
   ConeSurface(const Vec3& axis_point, const Vec3& axis, double radius_0, double radius_1,
               double height);
   bool nearest(const Vec3& centre, double reach, SurfacePoint& out) const override;
-  bool single_face() const override { return true; }
 
  private:
   Vec3 axis_point_;

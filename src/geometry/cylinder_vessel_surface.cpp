@@ -1,8 +1,11 @@
 #include "geometry/cylinder_vessel_surface.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+
+#include "geometry/contact_selection.hpp"
 
 #include "geometry/meridian.hpp"
 
@@ -85,6 +88,65 @@ bool CylinderVesselSurface::nearest(const Vec3& centre, double reach, SurfacePoi
   const Vec3 e_z = Vec3::UnitZ();
   out = {base_ + p.r * m.e_r + p.z * e_z, n_r * m.e_r + n_z * e_z, gap};
   return true;
+}
+
+// The side: the infinite cylinder, or its rim circle beyond an open disc.
+SurfacePoint CylinderVesselSurface::on_side(const Vec3& point) const {
+  const Meridian m = meridian(point, base_, Vec3::UnitZ());
+  const Vec3 e_z = Vec3::UnitZ();
+  const bool rim = (m.z < 0.0 && !bottom_closed_) || (m.z > height_ && !top_closed_);
+  if (!rim)
+    return {base_ + radius_ * m.e_r + m.z * e_z, -m.e_r, radius_ - m.r, 0};
+  const double z = std::clamp(m.z, 0.0, height_);
+  const double dr = m.r - radius_;
+  const double dz = m.z - z;
+  const double distance = std::hypot(dr, dz);
+  const Vec3 normal = distance > 0.0 ? Vec3((dr * m.e_r + dz * e_z) / distance) : Vec3(-m.e_r);
+  return {base_ + radius_ * m.e_r + z * e_z, normal, distance, 0};
+}
+
+bool CylinderVesselSurface::nearest_on_face(int face, const Vec3& point, double reach,
+                                            SurfacePoint& out) const {
+  const Vec3 e_z = Vec3::UnitZ();
+  const double z = (point - base_).dot(e_z);
+  if (face == 0) {
+    out = on_side(point);
+  } else if (face == 1 && bottom_closed_) {
+    out = {point - z * e_z, e_z, z, 1};
+  } else if (face == 2 && top_closed_) {
+    out = {point + (height_ - z) * e_z, -e_z, height_ - z, 2};
+  } else {
+    return false;
+  }
+  return out.gap <= reach;
+}
+
+int CylinderVesselSurface::face_points(const Vec3& centre, double reach,
+                                       std::span<SurfacePoint, 3> out) const {
+  int count = 0;
+  for (int face = 0; face < 3; ++face) {
+    if (nearest_on_face(face, centre, reach, out[count]))
+      ++count;
+  }
+  sort_deepest_first(out.first(count));
+  return count;
+}
+
+// Every face point is a contact: the rim circles of open discs touch no other face.
+int CylinderVesselSurface::contacts(const Vec3& centre, double reach,
+                                    std::span<SurfacePoint> out) const {
+  std::array<SurfacePoint, 3> candidates;
+  const int count = std::min(face_points(centre, reach, candidates), static_cast<int>(out.size()));
+  std::copy_n(candidates.begin(), count, out.begin());
+  return count;
+}
+
+int CylinderVesselSurface::faces_near(const Vec3& centre, double reach, std::span<int> out) const {
+  std::array<SurfacePoint, 3> candidates;
+  const int count = std::min(face_points(centre, reach, candidates), static_cast<int>(out.size()));
+  for (int k = 0; k < count; ++k)
+    out[k] = candidates[k].face;
+  return count;
 }
 
 }  // namespace partimix::geometry

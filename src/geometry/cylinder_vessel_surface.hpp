@@ -17,6 +17,13 @@
 //   closed surface (outside the cylinder, and not above an open top or below an open bottom),
 //   else +distance (the rim of an opening, touched from either side).
 // False when gap > reach.
+//
+// Faces (contacts(), docs/dem.md, "Walls of several faces"): 0 the side, 1 the bottom, 2 the top
+// (when closed). The inside is convex, so every face a sphere touches gives a contact of its
+// own. nearest_on_face() takes the side as the infinite cylinder r = R and a disc as its plane
+// (normals -e_r, +z, -z, gap = the signed distance), except beyond an open disc, where the side
+// ends at its rim circle (normal from the rim to the point, gap = +distance).
+#include <span>
 #include <vector>
 
 #include "geometry/face.hpp"
@@ -29,8 +36,15 @@ class CylinderVesselSurface final : public Surface {
   CylinderVesselSurface(const Vec3& base_centre, double radius, double height,
                         const std::vector<Face>& open_faces);
   bool nearest(const Vec3& centre, double reach, SurfacePoint& out) const override;
+  int contacts(const Vec3& centre, double reach, std::span<SurfacePoint> out) const override;
+  int faces_near(const Vec3& centre, double reach, std::span<int> out) const override;
+  bool nearest_on_face(int face, const Vec3& point, double reach, SurfacePoint& out) const override;
+  int max_contacts() const override { return 3; }
 
  private:
+  // The faces' points (nearest_on_face) with gap <= reach, deepest first; their number.
+  int face_points(const Vec3& centre, double reach, std::span<SurfacePoint, 3> out) const;
+  SurfacePoint on_side(const Vec3& point) const;
   bool crossed(double r, double z) const;
 
   Vec3 base_;

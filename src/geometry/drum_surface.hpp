@@ -15,7 +15,6 @@ class DrumSurface final : public Surface {
   DrumSurface(const Vec3& axis_point, const Vec3& axis, double radius)
       : axis_point_(axis_point), axis_(axis.normalized()), radius_(radius) {}
   bool nearest(const Vec3& centre, double reach, SurfacePoint& out) const override;
-  bool single_face() const override { return true; }
 
  private:
   Vec3 axis_point_;

@@ -1,16 +1,34 @@
 #pragma once
-// A triangle mesh (from STL) as a two-sided shell, a contact surface: a grain touches it at the
-// nearest point over all triangles (face, edge or corner; Ericson 2005, section 5.1.5), found
-// through the bounding volume hierarchy of triangle_bvh.hpp. One contact per mesh and grain, so
-// a grain on an edge between two faces is not pushed twice (and a grain in a concave corner
-// feels the nearer face only: docs/dem.md, "Walls").
+// A triangle mesh (from STL) as a two-sided shell, a contact surface, through the bounding volume
+// hierarchy of triangle_bvh.hpp. nearest(): the nearest point over all triangles (face, edge or
+// corner; Ericson 2005, section 5.1.5). contacts(): one contact per flat part a sphere touches
+// (docs/dem.md, "Walls of several faces"): the triangles are grouped into flat parts (joined
+// across edges whose triangles' normals are parallel within 1e-9, the edge's corners equal bit for
+// bit); the nearest point of each part within reach, less those that lie on a deeper part (on an
+// edge or corner bordering it, or within 1e-9 of the mesh's size of its nearest triangle), so
+// that a sphere on a flat or convex part gets one contact and a sphere in a concave corner one
+// per face. At most kCandidates parts within reach are looked at (the nearest).
 //
 // Both sides are material sides: the normal points from the nearest point to the centre and the
 // gap is the distance, never negative, so a grain that has crossed the shell is pushed on
 // through (the shell is meant to be thicker than a grain can cross in a step). False when the
 // distance exceeds `reach` (or the centre lies farther than `reach` outside the mesh's bounding
 // box), and for a centre exactly on the mesh (no normal).
+//
+// Faces: face 2 t + s is triangle t of the hierarchy's order seen from the side of its normal
+// (s = 0) or from behind (s = 1); contacts() and faces_near() give the side of the centre.
+// nearest_on_face() (for grains that are not spheres) keeps that side. Over the triangle: the
+// side's normal and the signed height (negative for a point behind). Beyond an edge or corner,
+// by how the surface bends there seen from that side (the neighbour across each edge, found by
+// equal corners): past a flat edge the point belongs to the neighbour, and the answer is the
+// neighbour's (out.face says which face answered); past concave edges only, the triangle's
+// plane goes on (as a box container's face past its closed edges); past a convex or free edge,
+// the normal points from the edge or corner to the point, turned over (gap -distance) for a
+// point behind the plane. shadowed(): a point of the same triangle, or of a deeper one.
+#include <array>
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "geometry/stl_reader.hpp"
 #include "geometry/surface.hpp"
@@ -20,16 +38,41 @@ namespace partimix::geometry {
 
 class MeshShellSurface final : public Surface {
  public:
+  static constexpr int kCandidates = 64;
+  static constexpr int kWalk = 64;  // triangles a point walks over a flat part
+
   explicit MeshShellSurface(const TriangleSoup& triangles);
   // Shares the hierarchy of a TriangleMesh (no copy of the triangles); `lower` and `upper`
   // bound its triangles.
   MeshShellSurface(std::shared_ptr<const TriangleBvh> bvh, const Vec3& lower, const Vec3& upper);
   bool nearest(const Vec3& centre, double reach, SurfacePoint& out) const override;
+  int contacts(const Vec3& centre, double reach, std::span<SurfacePoint> out) const override;
+  int faces_near(const Vec3& centre, double reach, std::span<int> out) const override;
+  bool nearest_on_face(int face, const Vec3& point, double reach, SurfacePoint& out) const override;
+  bool shadowed(const SurfacePoint& candidate, const SurfacePoint& deeper) const override;
+  int max_contacts() const override { return 6; }
 
  private:
+  enum class Bend : std::uint8_t { kFree, kFlat, kConcave, kConvex };
+
+  void find_neighbours();
+  void find_flat_parts();
+  bool near_box(const Vec3& centre, double reach) const;
+  // How the surface bends across edge k of triangle `slot`, seen from the side of `side_normal`.
+  Bend bend(std::uint32_t slot, int k, const Vec3& side_normal) const;
+  int flat_neighbour(int face, const Vec3& point) const;
+  // nearest_on_face() beyond the triangle, at its edge or corner `closest`.
+  SurfacePoint beyond_triangle(int face, const Vec3& point, const ClosestPoint& closest) const;
+  // The face of triangle `slot` on the side of `x`.
+  int face_towards(std::uint32_t slot, const Vec3& x) const;
+  SurfacePoint on_face(int face, const Vec3& point, const ClosestPoint& closest) const;
+
   std::shared_ptr<const TriangleBvh> bvh_;
   Vec3 lower_;
   Vec3 upper_;
+  double on_tolerance_ = 0.0;                            // a point this near a triangle lies on it
+  std::vector<std::array<std::int32_t, 3>> neighbours_;  // by slot and edge; -1: none
+  std::vector<std::int32_t> parts_;                      // the flat part of each slot
 };
 
 }  // namespace partimix::geometry

@@ -13,7 +13,6 @@ class PlaneSurface final : public Surface {
   PlaneSurface(const Vec3& point, const Vec3& normal)
       : point_(point), normal_(normal.normalized()) {}
   bool nearest(const Vec3& centre, double reach, SurfacePoint& out) const override;
-  bool single_face() const override { return true; }
 
  private:
   Vec3 point_;

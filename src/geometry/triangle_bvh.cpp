@@ -95,6 +95,29 @@ double squared_distance_to_box(const Eigen::AlignedBox3d& box, const Vec3& x) {
   return (box.min() - x).cwiseMax(x - box.max()).cwiseMax(0.0).squaredNorm();
 }
 
+// Nearest first, then by slot: a strict total order, independent of the traversal.
+bool precedes(const ClosestPoint& a, const ClosestPoint& b) {
+  return a.distance_squared < b.distance_squared ||
+         (a.distance_squared == b.distance_squared && a.slot < b.slot);
+}
+
+// Inserts `point` into the sorted first `count` entries of `out`, the last falling off when full.
+void insert_sorted(const ClosestPoint& point, std::span<ClosestPoint> out, int& count) {
+  int k = count < static_cast<int>(out.size()) ? count++ : count - 1;
+  while (k > 0 && precedes(point, out[k - 1])) {
+    out[k] = out[k - 1];
+    --k;
+  }
+  out[k] = point;
+}
+
+// Drops entry k of the first `count` entries of `out`.
+void erase_at(std::span<ClosestPoint> out, int k, int& count) {
+  for (int j = k + 1; j < count; ++j)
+    out[j - 1] = out[j];
+  --count;
+}
+
 Eigen::AlignedBox3d box_of(const Triangle& triangle) {
   Eigen::AlignedBox3d box(triangle.corner[0]);
   box.extend(triangle.corner[1]);
@@ -170,9 +193,67 @@ void TriangleBvh::visit_leaf(const Node& leaf, const Vec3& x, ClosestPoint& best
     ClosestPoint candidate = closest_point(triangles_[i], unit_normals_[i], x);
     if (candidate.distance_squared < best.distance_squared) {
       candidate.triangle = original_[i];
+      candidate.slot = i;
       best = candidate;
     }
   }
+}
+
+ClosestPoint TriangleBvh::closest_on(std::uint32_t slot, const Vec3& x) const {
+  ClosestPoint closest = closest_point(triangles_[slot], unit_normals_[slot], x);
+  closest.triangle = original_[slot];
+  closest.slot = slot;
+  return closest;
+}
+
+void TriangleBvh::gather_leaf(const Node& leaf, const Vec3& x, double reach_squared,
+                              std::span<ClosestPoint> out, std::span<const std::int32_t> groups,
+                              int& count) const {
+  const int capacity = static_cast<int>(out.size());
+  for (std::uint32_t i = leaf.first; i < leaf.first + leaf.count; ++i) {
+    const double height = (x - triangles_[i].corner[0]).dot(unit_normals_[i]);
+    if (height * height > reach_squared)
+      continue;
+    const ClosestPoint candidate = closest_on(i, x);
+    if (candidate.distance_squared > reach_squared)
+      continue;
+    if (!groups.empty()) {
+      const auto same = std::find_if(out.begin(), out.begin() + count, [&](const ClosestPoint& p) {
+        return groups[p.slot] == groups[i];
+      });
+      if (same != out.begin() + count) {
+        if (!precedes(candidate, *same))
+          continue;
+        erase_at(out, static_cast<int>(same - out.begin()), count);
+      }
+    }
+    if (count == capacity && !precedes(candidate, out[count - 1]))
+      continue;
+    insert_sorted(candidate, out, count);
+  }
+}
+
+int TriangleBvh::within(const Vec3& x, double reach, std::span<ClosestPoint> out,
+                        std::span<const std::int32_t> groups) const {
+  if (nodes_.empty() || out.empty())
+    return 0;
+  const double reach_squared = reach * reach;
+  int count = 0;
+  std::array<std::uint32_t, 64> stack{};
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
+    if (squared_distance_to_box(node.box, x) > reach_squared)
+      continue;
+    if (node.count > 0) {
+      gather_leaf(node, x, reach_squared, out, groups, count);
+      continue;
+    }
+    stack[top++] = node.first + 1;
+    stack[top++] = node.first;
+  }
+  return count;
 }
 
 // Depth first, nearer child first, skipping every box farther than the best point found so far.

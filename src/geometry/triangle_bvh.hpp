@@ -4,6 +4,7 @@
 #include <Eigen/Geometry>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "core/vec.hpp"
@@ -21,7 +22,8 @@ struct ClosestPoint {
   double distance_squared = 0.0;
   std::size_t triangle = 0;  // index in the triangles the hierarchy was built from
   TriangleFeature feature = TriangleFeature::kFace;
-  int index = 0;  // the edge or corner, 0..2
+  int index = 0;           // the edge or corner, 0..2
+  std::uint32_t slot = 0;  // index in the hierarchy's own order (TriangleBvh::closest_on)
 };
 
 // The closest point of a triangle to x (ClosestPoint::triangle left 0). Triangles of (nearly) no
@@ -38,6 +40,16 @@ class TriangleBvh {
 
   // The closest point to x over all triangles. Needs at least one triangle.
   ClosestPoint nearest(const Vec3& x) const;
+  // The closest points of the triangles within `reach` of x, one per triangle, nearest first
+  // (then by slot); the nearest out.size() when there are more. With `groups` (a group number
+  // per slot), only the nearest triangle of each group. Returns their number. No allocation.
+  int within(const Vec3& x, double reach, std::span<ClosestPoint> out,
+             std::span<const std::int32_t> groups = {}) const;
+  // The closest point to x on the triangle in `slot` alone, and that triangle and its unit
+  // normal (zero for a sliver).
+  ClosestPoint closest_on(std::uint32_t slot, const Vec3& x) const;
+  const Triangle& triangle(std::uint32_t slot) const { return triangles_[slot]; }
+  const Vec3& unit_normal(std::uint32_t slot) const { return unit_normals_[slot]; }
   std::size_t size() const { return triangles_.size(); }
 
  private:
@@ -50,6 +62,10 @@ class TriangleBvh {
   void build(std::uint32_t node, std::uint32_t begin, std::uint32_t end,
              std::vector<Eigen::AlignedBox3d>& boxes);
   void visit_leaf(const Node& leaf, const Vec3& x, ClosestPoint& best) const;
+  // Adds the leaf's triangles within sqrt(reach_squared) of x to the `count` sorted points.
+  void gather_leaf(const Node& leaf, const Vec3& x, double reach_squared,
+                   std::span<ClosestPoint> out, std::span<const std::int32_t> groups,
+                   int& count) const;
 
   std::vector<Node> nodes_;
   std::vector<Triangle> triangles_;    // in leaf order

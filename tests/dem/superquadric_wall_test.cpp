@@ -3,14 +3,25 @@
 // sphere-shaped grain in a drum against the sphere's overlap R - gap (1e-12); a turned ellipsoid
 // in a drum and a blocky grain on a plane against the deepest of 40,000 surface points
 // (overlap within 2e-3 of the smallest half-axis, normal within 1e-9 rad of the wall's).
+// Walls of several faces (docs/dem.md, "Walls and superquadrics"), one contact per face: a turned
+// ellipsoid on a tilted flat mesh of small triangles gets the plane's one contact (1e-12), in a
+// concave mesh corner and in a box container's corner the two faces' plane contacts (1e-12); a
+// sphere-shaped grain in a cylinder vessel's bottom corner the side's and the bottom's overlaps
+// R - gap (1e-12). (Across a convex edge of a mesh the contact is not yet right: docs/dem.md.)
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <array>
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include "dem/superquadric_wall.hpp"
+#include "geometry/box_container_surface.hpp"
+#include "geometry/cylinder_vessel_surface.hpp"
 #include "geometry/drum_surface.hpp"
+#include "geometry/grid_meshes.hpp"
+#include "geometry/mesh_shell_surface.hpp"
 #include "geometry/plane_surface.hpp"
 
 namespace partimix::dem {
@@ -28,7 +39,7 @@ TEST(SuperquadricWall, TurnedEllipsoidOnAPlaneMatchesItsSupportFunction) {
   const Mat3 shape = q * axes.cwiseProduct(axes).asDiagonal() * q.transpose();
   const double height = std::sqrt(Vec3::UnitY().dot(shape * Vec3::UnitY()));
   const Vec3 centre(0.01, height - 2.0e-4, -0.02);
-  const WallContact contact = superquadric_wall_contact(grain, centre, q, floor);
+  const WallContact contact = superquadric_face_contact(grain, centre, q, floor);
   ASSERT_TRUE(contact.touching);
   EXPECT_TRUE(contact.converged);
   EXPECT_NEAR(contact.overlap, 2.0e-4, 1e-15);
@@ -36,7 +47,7 @@ TEST(SuperquadricWall, TurnedEllipsoidOnAPlaneMatchesItsSupportFunction) {
   const Vec3 deepest = centre - shape * Vec3::UnitY() / height;
   EXPECT_LT((contact.point - (deepest + 1.0e-4 * Vec3::UnitY())).norm(), 1e-15);
   EXPECT_FALSE(
-      superquadric_wall_contact(grain, centre + 3.0e-4 * Vec3::UnitY(), q, floor).touching);
+      superquadric_face_contact(grain, centre + 3.0e-4 * Vec3::UnitY(), q, floor).touching);
 }
 
 TEST(SuperquadricWall, SphereShapedGrainInADrumOverlapsAsTheSphere) {
@@ -45,7 +56,7 @@ TEST(SuperquadricWall, SphereShapedGrainInADrumOverlapsAsTheSphere) {
   const geometry::DrumSurface drum(Vec3::Zero(), Vec3::UnitZ(), 0.1);
   const Vec3 centre = (0.1 - r + 3.0e-4) * Vec3(0.6, -0.8, 0.0) + Vec3(0, 0, 0.01);
   const WallContact contact =
-      superquadric_wall_contact(grain, centre, turned(1.0, Vec3(1, 1, 0)), drum);
+      superquadric_face_contact(grain, centre, turned(1.0, Vec3(1, 1, 0)), drum);
   ASSERT_TRUE(contact.touching);
   EXPECT_NEAR(contact.overlap, 3.0e-4, 1e-12);
   EXPECT_LT((contact.normal - Vec3(-0.6, 0.8, 0.0)).norm(), 1e-12);
@@ -78,7 +89,7 @@ TEST(SuperquadricWall, TurnedEllipsoidInADrumAndBlockyGrainOnAPlaneMatchSampledS
   const Superquadric ellipsoid(Vec3(1.0e-3, 1.0e-3, 3.0e-3), 2.0, 2.0);
   const Mat3 q = turned(0.9, Vec3(1, -2, 0.5));
   const Vec3 centre(0.0, -0.0186, 0.0);
-  const WallContact in_drum = superquadric_wall_contact(ellipsoid, centre, q, drum);
+  const WallContact in_drum = superquadric_face_contact(ellipsoid, centre, q, drum);
   ASSERT_TRUE(in_drum.touching);
   EXPECT_TRUE(in_drum.converged);
   EXPECT_NEAR(in_drum.overlap, deepest_sampled(ellipsoid, centre, q, drum), 2e-6);
@@ -88,10 +99,66 @@ TEST(SuperquadricWall, TurnedEllipsoidInADrumAndBlockyGrainOnAPlaneMatchSampledS
   const Mat3 tilt = turned(0.4, Vec3(2, 1, -1));
   const Vec3 up = Vec3(0.2, 1.0, 0.1).normalized();
   const Vec3 above = 1.5e-3 * up;
-  const WallContact on_floor = superquadric_wall_contact(blocky, above, tilt, floor);
+  const WallContact on_floor = superquadric_face_contact(blocky, above, tilt, floor);
   ASSERT_TRUE(on_floor.touching);
   EXPECT_NEAR(on_floor.overlap, deepest_sampled(blocky, above, tilt, floor), 2e-6);
   EXPECT_LT((on_floor.normal - up).norm(), 1e-9);
+}
+
+struct Expected {
+  Vec3 normal;
+  double overlap;
+};
+
+// The contacts of the grain with every face of `wall` are `expected`, deepest first, none failing.
+void expect_contacts(const Superquadric& grain, const Vec3& centre, const Mat3& q,
+                     const geometry::Surface& wall, const std::vector<Expected>& expected) {
+  std::array<WallContact, 8> found;
+  int failures = 0;
+  const int count = superquadric_wall_contacts(grain, centre, q, wall, found, failures);
+  EXPECT_EQ(failures, 0);
+  ASSERT_EQ(count, static_cast<int>(expected.size())) << "centre " << centre.transpose();
+  for (int k = 0; k < count; ++k) {
+    EXPECT_NEAR(found[k].overlap, expected[k].overlap, 1e-12) << "contact " << k;
+    EXPECT_LT((found[k].normal - expected[k].normal).norm(), 1e-12) << "contact " << k;
+  }
+}
+
+// The depth of the grain below the plane through `point` with unit normal `up`.
+double plane_overlap(const Superquadric& grain, const Vec3& centre, const Mat3& q,
+                     const Vec3& point, const Vec3& up) {
+  return -(centre + q * grain.support(q.transpose() * -up) - point).dot(up);
+}
+
+TEST(SuperquadricWall, AnEllipsoidMeetsEachFaceOfAMeshAndABoxOnce) {
+  const Superquadric ellipsoid(Vec3(1.0e-3, 1.5e-3, 3.0e-3), 2.0, 2.0);
+  const Mat3 q = turned(0.8, Vec3(1, 2, 3));
+  const Mat3 tilt = turned(0.3, Vec3(1, -1, 0.5));
+  const Vec3 up = tilt.col(2);
+  geometry::TriangleSoup flat;
+  geometry::testing::add_patch(flat, Vec3(-0.01, -0.01, 0.0), 5e-4 * tilt.col(0),
+                               5e-4 * tilt.col(1), 40, 40);
+  const geometry::MeshShellSurface mesh(flat);
+  const Vec3 origin = Vec3(-0.01, -0.01, 0.0) + 0.01 * (tilt.col(0) + tilt.col(1));
+  const double height = ellipsoid.support(q.transpose() * -up).dot(q.transpose() * -up);
+  const Vec3 centre = origin + (height - 2e-4) * up;
+  expect_contacts(ellipsoid, centre, q, mesh, {{up, 2e-4}});
+
+  const geometry::MeshShellSurface corner(geometry::testing::corner_mesh(5e-4, 20));
+  const geometry::BoxContainerSurface box(Vec3(0.0, -0.01, 0.0), Vec3::Constant(0.01), {});
+  const Vec3 in_corner(
+      plane_overlap(ellipsoid, Vec3::Zero(), q, Vec3::Zero(), Vec3::UnitX()) - 1e-4, 1e-4,
+      plane_overlap(ellipsoid, Vec3::Zero(), q, Vec3::Zero(), Vec3::UnitZ()) - 2e-4);
+  const std::vector<Expected> both{{Vec3::UnitZ(), 2e-4}, {Vec3::UnitX(), 1e-4}};
+  expect_contacts(ellipsoid, in_corner, q, corner, both);
+  expect_contacts(ellipsoid, in_corner, q, box, both);
+}
+
+TEST(SuperquadricWall, ASphereShapedGrainInAVesselCornerOverlapsSideAndBottom) {
+  const Superquadric sphere(Vec3::Constant(1e-3), 2.0, 2.0);
+  const geometry::CylinderVesselSurface vessel(Vec3::Zero(), 0.01, 0.02, {});
+  expect_contacts(sphere, Vec3(0.0, 0.0092, 0.0007), turned(0.5, Vec3(1, 1, 1)), vessel,
+                  {{Vec3::UnitZ(), 3e-4}, {-Vec3::UnitY(), 2e-4}});
 }
 
 }  // namespace
