@@ -11,6 +11,7 @@ namespace {
 
 constexpr int kIterations = 20;
 constexpr double kNormalTolerance = 1e-20;  // |n_{k+1} - n_k|^2: 1e-10 rad
+constexpr int kFewFaces = 4;
 
 }  // namespace
 
@@ -19,7 +20,7 @@ WallContact superquadric_face_contact(const Superquadric& shape, const Vec3& cen
                                       int face) {
   const double reach = shape.bounding_radius();
   geometry::SurfacePoint at;
-  WallContact contact;
+  WallContact contact{false, true, Vec3::UnitZ(), 0.0, Vec3::Zero(), {}};
   // The start: the face's normal at its point nearest the centre, whatever the gap there (the
   // face lies within reach: faces_near).
   surface.nearest_on_face(face, centre, std::numeric_limits<double>::infinity(), at);
@@ -42,23 +43,41 @@ WallContact superquadric_face_contact(const Superquadric& shape, const Vec3& cen
   }
 }
 
-int superquadric_wall_contacts(const Superquadric& shape, const Vec3& centre, const Mat3& rotation,
-                               const geometry::Surface& surface, std::span<WallContact> out,
-                               int& failures) {
-  std::array<int, kFaceCandidates> faces;
-  const int count = surface.faces_near(centre, shape.bounding_radius(), faces);
-  std::array<WallContact, kFaceCandidates> found;
+namespace {
+
+// The touching contacts of the `count` faces in `faces`, gathered in `found` (at least count
+// long), shadowed ones dropped.
+int touching_face_contacts(const Superquadric& shape, const Vec3& centre, const Mat3& rotation,
+                           const geometry::Surface& surface, std::span<const int> faces,
+                           std::span<WallContact> found, std::span<WallContact> out,
+                           int& failures) {
   int touching = 0;
-  for (int k = 0; k < count; ++k) {
-    const WallContact contact =
-        superquadric_face_contact(shape, centre, rotation, surface, faces[k]);
+  for (const int face : faces) {
+    const WallContact contact = superquadric_face_contact(shape, centre, rotation, surface, face);
     failures += contact.converged ? 0 : 1;
     if (contact.touching)
       found[touching++] = contact;
   }
   return geometry::select_contacts(
-      surface, std::span(found.data(), touching), out,
+      surface, found.first(touching), out,
       [](const WallContact& c) -> const geometry::SurfacePoint& { return c.wall; });
+}
+
+}  // namespace
+
+int superquadric_wall_contacts(const Superquadric& shape, const Vec3& centre, const Mat3& rotation,
+                               const geometry::Surface& surface, std::span<WallContact> out,
+                               int& failures) {
+  std::array<int, kFaceCandidates> faces;
+  const int count = surface.faces_near(centre, shape.bounding_radius(), faces);
+  const std::span<const int> near(faces.data(), static_cast<std::size_t>(count));
+  // Most grains meet one face of a wall: a short buffer then, which costs less to construct.
+  if (count <= kFewFaces) {
+    std::array<WallContact, kFewFaces> found;
+    return touching_face_contacts(shape, centre, rotation, surface, near, found, out, failures);
+  }
+  std::array<WallContact, kFaceCandidates> found;
+  return touching_face_contacts(shape, centre, rotation, surface, near, found, out, failures);
 }
 
 }  // namespace partimix::dem

@@ -11,12 +11,14 @@
 
 namespace partimix::dem {
 
+// Plain members without initialisers: the buffers of a wall's face contacts are built per grain
+// and wall every step; superquadric_face_contact sets every member.
 struct WallContact {
-  bool touching = false;
-  bool converged = true;        // false: the normal still turned after the last iteration
-  Vec3 normal = Vec3::UnitZ();  // from the wall to the grain
-  double overlap = 0.0;         // > 0 when touching
-  Vec3 point = Vec3::Zero();    // halfway between the deepest point and the surface
+  bool touching;
+  bool converged;               // false: the normal still turned after the last iteration
+  Vec3 normal;                  // from the wall to the grain
+  double overlap;               // > 0 when touching
+  Vec3 point;                   // halfway between the deepest point and the surface
   geometry::SurfacePoint wall;  // the face's point nearest the deepest point, its face and gap
 };
 
