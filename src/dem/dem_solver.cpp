@@ -155,7 +155,7 @@ void DemSolver::set_orientation(std::size_t i, const Quaternion& q) {
   (*orientation_v_)[i] = q.vec();
 }
 
-double DemSolver::hertz_radius(std::size_t i) const {
+double DemSolver::equivalent_radius(std::size_t i) const {
   const Superquadric* shape = shapes_[(*species_)[i]];
   return shape ? shape->equivalent_radius() : (*radius_)[i];
 }
@@ -343,7 +343,7 @@ bool DemSolver::wall_loads(std::size_t i, double dt, int& failures) {
   const auto& m = store_.mass();
   const int s_i = (*species_)[i];
   const bool shaped = shapes_[s_i] != nullptr;
-  const double radius = hertz_radius(i);
+  const double radius = equivalent_radius(i);
   std::uint64_t touched = 0;
   bool fits = true;
   for (std::size_t w = 0; w < walls_.size(); ++w) {

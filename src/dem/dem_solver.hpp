@@ -132,9 +132,8 @@ class DemSolver final : public Solver {
   void update_frames();
   bool ellipsoidal(std::size_t i) const;  // a sphere or an ellipsoid
   Ellipsoid ellipsoid(std::size_t i, const Vec3& centre) const;
-  Vec3 half_axes(std::size_t i) const;
-  // The radius of the Hertz law: the grain's, or its shape's volume-equivalent radius.
-  double hertz_radius(std::size_t i) const;
+  // The grain's radius, or its shape's volume-equivalent radius (the rolling inertia's).
+  double equivalent_radius(std::size_t i) const;
   // Grain i's radius in the Hertz law at its surface point centre + arm (world frame): its
   // radius or its shape's by dem.hertz_radius (docs/dem.md, "Hertz radius").
   double contact_radius(std::size_t i, const Vec3& arm) const;

@@ -19,18 +19,13 @@ void DemSolver::update_frames() {
   for (std::size_t i = 0; i < store_.size(); ++i) {
     frames_[i].rotation = orientation(i).toRotationMatrix();
     if (ellipsoidal(i))
-      frames_[i].inverse_shape = ellipsoid_inverse_shape(frames_[i].rotation, half_axes(i));
+      frames_[i].inverse_shape = ellipsoid_inverse_shape(frames_[i].rotation, (*half_axes_)[i]);
   }
 }
 
 bool DemSolver::ellipsoidal(std::size_t i) const {
   const Superquadric* shape = shapes_[(*species_)[i]];
   return shape == nullptr || shape->is_ellipsoid();
-}
-
-Vec3 DemSolver::half_axes(std::size_t i) const {
-  const Superquadric* shape = shapes_[(*species_)[i]];
-  return shape ? shape->half_axes() : Vec3::Constant((*radius_)[i]);
 }
 
 double DemSolver::contact_radius(std::size_t i, const Vec3& arm) const {
@@ -42,7 +37,7 @@ double DemSolver::contact_radius(std::size_t i, const Vec3& arm) const {
 }
 
 Ellipsoid DemSolver::ellipsoid(std::size_t i, const Vec3& centre) const {
-  return {centre, frames_[i].rotation, half_axes(i), frames_[i].inverse_shape};
+  return {centre, frames_[i].rotation, (*half_axes_)[i], frames_[i].inverse_shape};
 }
 
 // Two ellipsoids (or spheres) by their contact function, other pairs by the general midway
@@ -101,8 +96,8 @@ int DemSolver::shaped_pair_loads(std::size_t k, const Vec3& rij, double dt) {
   c.pair = pair_properties(particle_materials_[pair], contact_radius(i, arm_i + to_surface),
                            contact_radius(j, arm_j - to_surface), m[i], m[j]);
   c.interaction = &config_.particle_interactions[pair];
-  const double radius_i = hertz_radius(i);
-  const double radius_j = hertz_radius(j);
+  const double radius_i = equivalent_radius(i);
+  const double radius_j = equivalent_radius(j);
   const double inertia_i = 1.4 * m[i] * radius_i * radius_i;
   const double inertia_j = 1.4 * m[j] * radius_j * radius_j;
   c.rolling_inertia = 1.0 / (1.0 / inertia_i + 1.0 / inertia_j);
