@@ -205,7 +205,7 @@ void DemSolver::compute_time_step() {
 }
 
 void DemSolver::step(double dt) {
-  half_kick(dt);
+  half_kick(dt, false);
   drift(dt);
   time_ += dt;
   if (++steps_ % config_.sort_interval == 0)
@@ -213,10 +213,10 @@ void DemSolver::step(double dt) {
   for (WallState& wall : walls_)
     wall.pose = walls_frozen_ ? at_rest(wall.motion->pose(0.0)) : wall.motion->pose(time_);
   compute_loads(dt);
-  half_kick(dt);
+  half_kick(dt, true);
 }
 
-void DemSolver::half_kick(double dt) {
+void DemSolver::half_kick(double dt, bool superquadric_spins) {
   auto& v = store_.velocity();
   const auto& m = store_.mass();
 #pragma omp parallel for schedule(static)
@@ -224,7 +224,8 @@ void DemSolver::half_kick(double dt) {
     v[i] += 0.5 * dt * ((*force_)[i] / m[i] + gravity_);
     if (const auto& rotor = rotors_[(*species_)[i]]) {
       kick_angular_momentum((*angular_momentum_)[i], (*torque_)[i], dt);
-      (*angular_velocity_)[i] = rotor->angular_velocity(orientation(i), (*angular_momentum_)[i]);
+      if (superquadric_spins)
+        (*angular_velocity_)[i] = rotor->angular_velocity(orientation(i), (*angular_momentum_)[i]);
       continue;
     }
     const double inertia = 0.4 * m[i] * (*radius_)[i] * (*radius_)[i];
@@ -235,8 +236,9 @@ void DemSolver::half_kick(double dt) {
 }
 
 // Positions, and the orientations of superquadrics by the torque-free motion of their rotor
-// (dem/rigid_rotation.hpp). A sphere's orientation is not needed and not kept: it stays the
-// identity (turning it cost a tenth of a step).
+// (dem/rigid_rotation.hpp; their angular velocities follow in update_frames). A sphere's
+// orientation is not needed and not kept: it stays the identity (turning it cost a tenth of a
+// step).
 void DemSolver::drift(double dt) {
   auto& x = store_.position();
   const auto& v = store_.velocity();
@@ -248,7 +250,6 @@ void DemSolver::drift(double dt) {
       Quaternion q = orientation(i);
       rotor->drift(q, (*angular_momentum_)[i], dt);
       set_orientation(i, q);
-      (*angular_velocity_)[i] = rotor->angular_velocity(q, (*angular_momentum_)[i]);
     }
   }
 }

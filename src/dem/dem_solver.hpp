@@ -106,7 +106,9 @@ class DemSolver final : public Solver {
   void assign_shape(std::size_t i);
   void make_walls();
   void compute_time_step();
-  void half_kick(double dt);
+  // v and omega (spheres) or L (superquadrics) by dt/2 of the loads; the superquadrics' omega
+  // from L too when `superquadric_spins` (not before the drift, which turns them).
+  void half_kick(double dt, bool superquadric_spins);
   void drift(double dt);
   void sort_by_cell();
   void compute_loads(double dt);
@@ -128,7 +130,7 @@ class DemSolver final : public Solver {
   int ended_wall_slot(std::size_t i, std::size_t w, std::uint64_t touched) const;
   // A shaped run's grain frames, set from the orientations before each step's contacts: the
   // rotation (body to world) and, for spheres and ellipsoids, the inverse shape matrix of their
-  // contact function (dem/ellipsoid_contact.hpp).
+  // contact function (dem/ellipsoid_contact.hpp); the superquadrics' omega from L with it.
   void update_frames();
   bool ellipsoidal(std::size_t i) const;  // a sphere or an ellipsoid
   Ellipsoid ellipsoid(std::size_t i, const Vec3& centre) const;

@@ -18,6 +18,9 @@ void DemSolver::update_frames() {
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < store_.size(); ++i) {
     frames_[i].rotation = orientation(i).toRotationMatrix();
+    if (const auto& rotor = rotors_[(*species_)[i]])
+      (*angular_velocity_)[i] =
+          rotor->angular_velocity(frames_[i].rotation, (*angular_momentum_)[i]);
     if (ellipsoidal(i))
       frames_[i].inverse_shape = ellipsoid_inverse_shape(frames_[i].rotation, (*half_axes_)[i]);
   }
@@ -73,6 +76,13 @@ int DemSolver::shaped_pair_loads(std::size_t k, const Vec3& rij, double dt) {
   const std::size_t j = pairs_->second(k);
   const Vec3 centre_j = x[i] - rij;  // the image of j nearest to i
   PairHistory& history = pairs_->history(k);
+  if (ellipsoidal(i) && ellipsoidal(j) &&
+      apart_along_centre_line(frames_[i].inverse_shape, rij, frames_[j].inverse_shape)) {
+    history.midway = Vec3::Zero();
+    history.mu = 0.0;
+    pairs_->set_touching(k, false);
+    return 0;
+  }
   const SuperquadricContact found = shaped_contact(i, j, centre_j, history);
   const int failures = found.converged ? 0 : 1;
   // The warm start of the next step: kept while Newton runs for the pair (its bounding boxes

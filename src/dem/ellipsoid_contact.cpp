@@ -90,6 +90,16 @@ void add_surface_points(const Ellipsoid& i, const Ellipsoid& j, const Maximum& m
 
 }  // namespace
 
+// With q = d^T A^-1 d, |d|^2 > sqrt(q_i) + sqrt(q_j) squared twice: no square root.
+bool apart_along_centre_line(const Mat3& inverse_shape_i, const Vec3& d,
+                             const Mat3& inverse_shape_j) {
+  const double q_i = d.dot(inverse_shape_i * d);
+  const double q_j = d.dot(inverse_shape_j * d);
+  const double d2 = d.squaredNorm();
+  const double excess = d2 * d2 - q_i - q_j;
+  return excess > 0.0 && excess * excess > 4.0 * q_i * q_j;
+}
+
 Mat3 ellipsoid_inverse_shape(const Mat3& rotation, const Vec3& half_axes) {
   return rotation * half_axes.cwiseAbs2().asDiagonal() * rotation.transpose();
 }
@@ -106,7 +116,8 @@ SuperquadricContact find_ellipsoid_contact(const Ellipsoid& i, const Ellipsoid& 
                                            std::optional<double> mu) {
   const Vec3 d = j.centre - i.centre;
   const double reach = i.half_axes.maxCoeff() + j.half_axes.maxCoeff();
-  if (d.squaredNorm() >= reach * reach)
+  if (d.squaredNorm() >= reach * reach ||
+      apart_along_centre_line(i.inverse_shape, d, j.inverse_shape))
     return {};
   SuperquadricContact c;
   c.near = true;

@@ -24,13 +24,20 @@ struct Ellipsoid {
 };
 
 Mat3 ellipsoid_inverse_shape(const Mat3& rotation, const Vec3& half_axes);
+
+// The separating-axis test on the centre line d (from i to j): true when the grains' extents
+// along u = d / |d|, sqrt(u^T A^-1 u) each (an ellipsoid's support distance), add up to less
+// than |d|, so that they cannot touch (docs/dem.md, "Ellipsoid pairs"). Two quadratic forms, no
+// 3 x 3 solve: the cheap rejection of the pairs whose bounding spheres overlap.
+bool apart_along_centre_line(const Mat3& inverse_shape_i, const Vec3& d,
+                             const Mat3& inverse_shape_j);
 Ellipsoid make_ellipsoid(const Vec3& centre, const Mat3& rotation, const Vec3& half_axes);
 
 // The contact of ellipsoid i with ellipsoid j, the iteration started from the multiplier mu of
 // the last step's midway point when given (t = 1 / (1 + mu^2)), else from the equivalent spheres
-// on the centre line. `near` is false (and nothing else set) when the bounding spheres are apart;
-// the midway point, normal, overlap and contact point are set for touching grains only (mu,
-// the warm start, always).
+// on the centre line. `near` is false (and nothing else set) when the bounding spheres are apart
+// or the grains' extents along the centre line do not meet (a separating axis); the midway point,
+// normal, overlap and contact point are set for touching grains only (mu, the warm start, always).
 SuperquadricContact find_ellipsoid_contact(const Ellipsoid& i, const Ellipsoid& j,
                                            std::optional<double> mu);
 

@@ -6,6 +6,21 @@
 namespace partimix::dem {
 namespace {
 
+// sin x and cos x. The turns of one step are small, and for |x| < 0.05 the Taylor series to x^9
+// and x^10 are exact in double precision (the first term left out, x^11 / 11!, is below 1e-21
+// of the sum) and cost a few multiplications; larger x go to the library.
+void sin_cos(double x, double& sine, double& cosine) {
+  if (std::abs(x) >= 0.05) {
+    sine = std::sin(x);
+    cosine = std::cos(x);
+    return;
+  }
+  const double x2 = x * x;
+  sine = x * (1.0 - x2 / 6.0 * (1.0 - x2 / 20.0 * (1.0 - x2 / 42.0 * (1.0 - x2 / 72.0))));
+  cosine = 1.0 -
+           x2 / 2.0 * (1.0 - x2 / 12.0 * (1.0 - x2 / 30.0 * (1.0 - x2 / 56.0 * (1.0 - x2 / 90.0))));
+}
+
 // The exact flow of H_k = rate L_k^2 / 2 over dt, with L in the body frame: the body turns by
 // theta = rate L_k dt about its axis k and L by -theta about the same axis (docs/dem.md,
 // Rotation); L_k is unchanged, so the same step with -dt undoes it.
@@ -14,8 +29,9 @@ void turn_about_axis(Quaternion& q, Vec3& body_momentum, Eigen::Index axis, doub
   const double angle = rate * body_momentum[axis] * dt;
   if (angle == 0.0)
     return;
-  const double s = std::sin(0.5 * angle);
-  const double c = std::cos(0.5 * angle);
+  double s = 0.0;
+  double c = 1.0;
+  sin_cos(0.5 * angle, s, c);
   Quaternion turn(c, 0.0, 0.0, 0.0);
   turn.vec()[axis] = s;
   q = q * turn;
@@ -33,9 +49,14 @@ void turn_about_axis(Quaternion& q, Vec3& body_momentum, Eigen::Index axis, doub
 // as the spheres turn in dem_solver.cpp.
 void turn_as_sphere(Quaternion& q, const Vec3& momentum, double inertia, double dt) {
   const Vec3 omega = momentum / inertia;
-  const double angle = omega.norm() * dt;
-  if (angle != 0.0)
-    q = Quaternion(Eigen::AngleAxisd(angle, omega.normalized())) * q;
+  const double rate = omega.norm();
+  if (rate * dt == 0.0)
+    return;
+  double s = 0.0;
+  double c = 1.0;
+  sin_cos(0.5 * rate * dt, s, c);
+  const Vec3 axis_sine = (s / rate) * omega;
+  q = Quaternion(c, axis_sine.x(), axis_sine.y(), axis_sine.z()) * q;
 }
 
 }  // namespace
@@ -43,6 +64,7 @@ void turn_as_sphere(Quaternion& q, const Vec3& momentum, double inertia, double 
 RigidRotor::RigidRotor(const Vec3& moments) : moments_(moments) {
   if (!(moments.minCoeff() > 0.0))
     throw std::invalid_argument("rigid rotor: the principal moments must be positive");
+  inverse_moments_ = moments.cwiseInverse();
   moments.minCoeff(&half_axis_);
   moments.maxCoeff(&full_axis_);
   if (half_axis_ == full_axis_)
@@ -53,7 +75,11 @@ RigidRotor::RigidRotor(const Vec3& moments) : moments_(moments) {
 }
 
 Vec3 RigidRotor::angular_velocity(const Quaternion& q, const Vec3& momentum) const {
-  return q * (q.conjugate() * momentum).cwiseQuotient(moments_);
+  return q * (q.conjugate() * momentum).cwiseProduct(inverse_moments_);
+}
+
+Vec3 RigidRotor::angular_velocity(const Mat3& rotation, const Vec3& momentum) const {
+  return rotation * (rotation.transpose() * momentum).cwiseProduct(inverse_moments_);
 }
 
 Vec3 RigidRotor::angular_momentum(const Quaternion& q, const Vec3& omega) const {

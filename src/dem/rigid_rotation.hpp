@@ -25,8 +25,9 @@ class RigidRotor {
   explicit RigidRotor(const Vec3& moments);
 
   const Vec3& moments() const { return moments_; }
-  // omega = Q I^-1 Q^T L, in the world frame.
+  // omega = Q I^-1 Q^T L, in the world frame; Q as a quaternion or as its rotation matrix.
   Vec3 angular_velocity(const Quaternion& q, const Vec3& momentum) const;
+  Vec3 angular_velocity(const Mat3& rotation, const Vec3& momentum) const;
   // L = Q I Q^T omega, in the world frame.
   Vec3 angular_momentum(const Quaternion& q, const Vec3& omega) const;
   // E = L . omega / 2.
@@ -37,6 +38,7 @@ class RigidRotor {
 
  private:
   Vec3 moments_;
+  Vec3 inverse_moments_;
   double reference_ = 0.0;      // the intermediate moment: the sphere part of the splitting
   Eigen::Index half_axis_ = 0;  // the smallest moment's axis: two half steps
   Eigen::Index full_axis_ = 0;  // the largest moment's axis: one full step

@@ -25,8 +25,14 @@ WallContact superquadric_face_contact(const Superquadric& shape, const Vec3& cen
   // face lies within reach: faces_near).
   surface.nearest_on_face(face, centre, std::numeric_limits<double>::infinity(), at);
   Vec3 normal = at.normal;
+  const bool convex = surface.face_is_convex(face);
+  const double centre_gap = at.gap;
   for (int k = 0;; ++k) {
     const Vec3 deepest = centre + rotation * shape.support(rotation.transpose() * (-normal));
+    // The grain's extent along the normal, -(deepest - centre) . normal, short of the gap: a
+    // convex face is apart (Surface::face_is_convex), with no further iteration.
+    if (k == 0 && convex && centre_gap + (deepest - centre).dot(normal) > 0.0)
+      return contact;
     if (!surface.nearest_on_face(face, deepest, 2.0 * reach, at))
       return contact;
     const bool settled = (at.normal - normal).squaredNorm() < kNormalTolerance;

@@ -43,6 +43,7 @@ class BoxContainerSurface final : public Surface {
   bool nearest_on_face(int face, const Vec3& point, double reach, SurfacePoint& out) const override;
   bool shadowed(const SurfacePoint& candidate, const SurfacePoint& deeper) const override;
   // A grain inside a box wider than it touches three faces at most.
+  bool face_is_convex(int /*face*/) const override { return true; }  // a plane or a rectangle
   int max_contacts() const override { return 3; }
 
  private:

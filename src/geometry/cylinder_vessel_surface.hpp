@@ -39,6 +39,7 @@ class CylinderVesselSurface final : public Surface {
   int contacts(const Vec3& centre, double reach, std::span<SurfacePoint> out) const override;
   int faces_near(const Vec3& centre, double reach, std::span<int> out) const override;
   bool nearest_on_face(int face, const Vec3& point, double reach, SurfacePoint& out) const override;
+  bool face_is_convex(int face) const override { return face != 0; }  // the discs' planes
   int max_contacts() const override { return 3; }
 
  private:

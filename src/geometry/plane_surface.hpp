@@ -13,6 +13,7 @@ class PlaneSurface final : public Surface {
   PlaneSurface(const Vec3& point, const Vec3& normal)
       : point_(point), normal_(normal.normalized()) {}
   bool nearest(const Vec3& centre, double reach, SurfacePoint& out) const override;
+  bool face_is_convex(int /*face*/) const override { return true; }
 
  private:
   Vec3 point_;

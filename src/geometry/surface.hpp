@@ -51,6 +51,11 @@ class Surface {
   // `deeper` too, so that it is not a contact of its own (docs/dem.md, "Walls of several faces").
   // The default: false (one face, or faces that never share a point a grain can touch).
   virtual bool shadowed(const SurfacePoint& candidate, const SurfacePoint& deeper) const;
+  // Whether face `face`, as nearest_on_face() sees it, is a convex set (a plane, a rectangle):
+  // then the plane through its point nearest a grain's centre, normal to the face's normal there,
+  // separates the face from every grain whose extent along that normal falls short of the gap
+  // (docs/dem.md, "Walls and superquadrics"). The default: false.
+  virtual bool face_is_convex(int /*face*/) const { return false; }
   // The most contacts contacts() gives for one grain (slots in the DEM solver's contact history),
   // at most kMaxSurfaceContacts.
   virtual int max_contacts() const { return 1; }

@@ -50,6 +50,42 @@ TEST(SuperquadricWall, TurnedEllipsoidOnAPlaneMatchesItsSupportFunction) {
       superquadric_face_contact(grain, centre + 3.0e-4 * Vec3::UnitY(), q, floor).touching);
 }
 
+// A convex face rejects a grain after one support point when the grain's extent along the normal
+// falls short of the gap (Surface::face_is_convex): grains 1e-9 m either side of touching, turned
+// at random, ellipsoids and blocky grains, over a plane and over a box container's floor, touch
+// exactly when the support point says so, and the ones that touch keep the iteration's overlap.
+TEST(SuperquadricWall, ConvexFacesRejectGrainsThatFallShortOfTheGap) {
+  const geometry::PlaneSurface floor(Vec3::Zero(), Vec3::UnitY());
+  const geometry::BoxContainerSurface box(Vec3(-0.01, 0.0, -0.01), Vec3(0.01, 0.02, 0.01),
+                                          {geometry::Face{1, 1}});  // open top
+  ASSERT_TRUE(floor.face_is_convex(0));
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int checked = 0;
+  for (const double n1 : {2.0, 4.0}) {
+    const Superquadric grain(Vec3(1.0e-3, 1.5e-3, 3.0e-3), n1, n1);
+    for (int k = 0; k < 50; ++k) {
+      const Mat3 q = turned(3.0 * unit(random), Vec3(unit(random), unit(random), 1.0));
+      // The extent below the centre along -y: the support point in that direction.
+      const double extent = -(q * grain.support(q.transpose() * -Vec3::UnitY())).y();
+      for (const double miss : {-1.0e-9, 1.0e-9}) {
+        const Vec3 centre(1.0e-3 * unit(random), extent + miss, 1.0e-3 * unit(random));
+        const WallContact on_plane = superquadric_face_contact(grain, centre, q, floor);
+        EXPECT_EQ(on_plane.touching, miss < 0.0);
+        EXPECT_TRUE(on_plane.converged);
+        if (on_plane.touching) {
+          EXPECT_NEAR(on_plane.overlap, -miss, 1e-15);
+        }
+        const int bottom = 2;  // face 2 axis + (side > 0): y, low side
+        ASSERT_TRUE(box.face_is_convex(bottom));
+        EXPECT_EQ(superquadric_face_contact(grain, centre, q, box, bottom).touching, miss < 0.0);
+        ++checked;
+      }
+    }
+  }
+  EXPECT_EQ(checked, 200);
+}
+
 TEST(SuperquadricWall, SphereShapedGrainInADrumOverlapsAsTheSphere) {
   const double r = 2.0e-3;
   const Superquadric grain(Vec3::Constant(r), 2.0, 2.0);
