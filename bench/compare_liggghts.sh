@@ -14,7 +14,7 @@ bench="$build/bench/partimix_bench"
 
 if ! command -v liggghts >/dev/null; then
   [ "$(id -u)" -eq 0 ] || { echo "compare_liggghts: need root to install liggghts" >&2; exit 1; }
-  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq liggghts
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq liggghts >/dev/null
 fi
 
 work="$(mktemp -d)"
