@@ -110,7 +110,9 @@ def main():
     out.mkdir(parents=True, exist_ok=True)
     columns = [k for k in rows[0] if not k.startswith("_")]
     with open(out / "aspect_ratio_study.csv", "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=columns, extrasaction="ignore")
+        writer = csv.DictWriter(
+            f, fieldnames=columns, extrasaction="ignore", lineterminator="\n"
+        )
         writer.writeheader()
         writer.writerows(rows)
     print("| " + " | ".join(columns) + " |")
