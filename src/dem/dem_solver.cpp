@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include <fmt/format.h>
+#include <omp.h>
 #include <Eigen/Geometry>
 
 #include "core/error.hpp"
@@ -219,7 +220,7 @@ void DemSolver::step(double dt) {
 void DemSolver::half_kick(double dt, bool superquadric_spins) {
   auto& v = store_.velocity();
   const auto& m = store_.mass();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel(store_.size()))
   for (std::size_t i = 0; i < store_.size(); ++i) {
     v[i] += 0.5 * dt * ((*force_)[i] / m[i] + gravity_);
     if (const auto& rotor = rotors_[(*species_)[i]]) {
@@ -242,7 +243,7 @@ void DemSolver::half_kick(double dt, bool superquadric_spins) {
 void DemSolver::drift(double dt) {
   auto& x = store_.position();
   const auto& v = store_.velocity();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel(store_.size()))
   for (std::size_t i = 0; i < store_.size(); ++i) {
     x[i] += dt * v[i];
     domain_.wrap(x[i]);
@@ -275,16 +276,17 @@ void DemSolver::compute_loads(double dt) {
   }
   if (angular_momentum_)
     update_frames();
+  pairs_->partition(parallel(store_.size()) ? omp_get_max_threads() : 1);
   int failures = 0;
-#pragma omp parallel for schedule(static) reduction(+ : failures)
-  for (std::size_t k = 0; k < pairs_->size(); ++k)
-    failures += pair_loads(k, dt);
+#pragma omp parallel for schedule(static, 1) reduction(+ : failures) if (pairs_->blocks() > 1)
+  for (int b = 0; b < pairs_->blocks(); ++b)
+    failures += block_loads(b, dt);
   bool overflow = false;
-#pragma omp parallel for schedule(static) reduction(|| : overflow) reduction(+ : failures)
+#pragma omp parallel for schedule(static) reduction(|| : overflow) reduction(+ : failures) \
+    if (parallel(store_.size()))
   for (std::size_t i = 0; i < store_.size(); ++i) {
-    (*force_)[i] = Vec3::Zero();
-    (*torque_)[i] = Vec3::Zero();
-    pairs_->gather(i, (*force_)[i], (*torque_)[i]);
+    if (pairs_->gathered(i))
+      pairs_->gather(i, (*force_)[i], (*torque_)[i]);
     overflow = !wall_loads(i, dt, failures) || overflow;
   }
   contact_failures_ += failures;
@@ -294,6 +296,18 @@ void DemSolver::compute_loads(double dt) {
                     "wall contact history)",
                     wall_history_->capacity()));
   }
+}
+
+// Block b's grains start from no load; its pairs in order add theirs.
+int DemSolver::block_loads(int b, double dt) {
+  const std::uint32_t begin = pairs_->block_start(b);
+  const std::uint32_t end = pairs_->block_start(b + 1);
+  std::fill(force_->begin() + begin, force_->begin() + end, Vec3::Zero());
+  std::fill(torque_->begin() + begin, torque_->begin() + end, Vec3::Zero());
+  int failures = 0;
+  for (std::size_t k = pairs_->pair_start(begin); k < pairs_->pair_start(end); ++k)
+    failures += pair_loads(k, dt);
+  return failures;
 }
 
 int DemSolver::pair_loads(std::size_t k, double dt) {
@@ -308,14 +322,14 @@ int DemSolver::pair_loads(std::size_t k, double dt) {
   const double reach = radius[i] + radius[j];
   const double r2 = rij.squaredNorm();
   if (r2 >= reach * reach) {
-    pairs_->set_touching(k, false);
+    pairs_->set_apart(k);
     return 0;
   }
   if (shapes_[(*species_)[i]] || shapes_[(*species_)[j]])
     return shaped_pair_loads(k, rij, dt);
   const double distance = std::sqrt(r2);
   Contact c;
-  c.normal = rij / distance;
+  c.normal = rij * (1.0 / distance);
   c.overlap = reach - distance;
   const double lever_i = radius[i] - 0.5 * c.overlap;
   const double lever_j = radius[j] - 0.5 * c.overlap;
@@ -323,18 +337,17 @@ int DemSolver::pair_loads(std::size_t k, double dt) {
       v[i] - v[j] - lever_i * omega[i].cross(c.normal) - lever_j * omega[j].cross(c.normal);
   c.relative_angular_velocity = omega[i] - omega[j];
   const std::size_t pair = (*species_)[i] * config_.species.size() + (*species_)[j];
-  c.pair = pair_properties(particle_materials_[pair], radius[i], radius[j], m[i], m[j]);
+  c.pair = grain_pair_properties(particle_materials_[pair], radius[i], radius[j], m[i], m[j]);
   c.interaction = &config_.particle_interactions[pair];
   const double inertia_i = 1.4 * m[i] * radius[i] * radius[i];  // about the contact point
   const double inertia_j = 1.4 * m[j] * radius[j] * radius[j];
-  c.rolling_inertia = 1.0 / (1.0 / inertia_i + 1.0 / inertia_j);
+  c.rolling_inertia = inertia_i * inertia_j / (inertia_i + inertia_j);
   PairHistory& history = pairs_->history(k);
   const ContactLoad load = load_of(c, history.spring, history.rolling_spring, dt);
-  PairLoad& out = pairs_->load(k);
-  out.force = load.force;
-  out.torque_i = (-lever_i * c.normal).cross(load.tangential) + load.rolling;
-  out.torque_j = (-lever_j * c.normal).cross(load.tangential) - load.rolling;
-  pairs_->set_touching(k, true);
+  pairs_->deliver(k,
+                  {load.force, (-lever_i * c.normal).cross(load.tangential) + load.rolling,
+                   (-lever_j * c.normal).cross(load.tangential) - load.rolling},
+                  *force_, *torque_);
   return 0;
 }
 
@@ -455,11 +468,16 @@ DemSolver::ContactLoad DemSolver::load_of(const Contact& c, Vec3& spring, Vec3& 
   const NormalResponse normal = normal_law_->respond(c.pair, c.overlap, u_n);
   const double normal_force = normal.force;
   const Interaction& with = *c.interaction;
-  TangentialStep tangential{normal.tangential_stiffness,         normal_force,  c.normal,
-                            c.contact_velocity - u_n * c.normal, with.friction, dt};
+  TangentialStep tangential{normal.tangential_stiffness,
+                            normal.tangential_damping,
+                            normal_force,
+                            c.normal,
+                            c.contact_velocity - u_n * c.normal,
+                            with.friction,
+                            dt};
   if (config_.seed_tangential_cap)
     tangential.spring_cap = seed_spring_cap(c.pair, with.friction, c.overlap);
-  const Vec3 f_t = tangential_force(c.pair, tangential, spring);
+  const Vec3 f_t = tangential_force(tangential, spring);
   const RollingStep rolling{
       normal_force, normal.normal_stiffness,     c.pair.radius,         c.rolling_inertia,
       c.normal,     c.relative_angular_velocity, with.rolling_friction, dt};

@@ -2,9 +2,9 @@
 // DEM for spheres and superquadrics (docs/dem.md): Hertz-Mindlin (or linear) contacts with
 // history, rolling resistance, moving walls, periodic axes, velocity Verlet at a fraction of the
 // Rayleigh time; superquadric grains turn as rigid bodies with three principal moments.
-// Each pair of grains is evaluated once from a neighbour list with a skin; each grain then
-// gathers its pairs' loads in a fixed order (DESIGN.md, "Data and speed"), so the result does
-// not depend on the thread count.
+// Each pair of grains is evaluated once from a neighbour list with a skin, each grain summing
+// its pairs' loads in a fixed order (DESIGN.md, "Data and speed"; dem/pair_list.hpp), so the
+// result does not depend on the thread count.
 #include <array>
 #include <memory>
 #include <optional>
@@ -112,8 +112,9 @@ class DemSolver final : public Solver {
   void drift(double dt);
   void sort_by_cell();
   void compute_loads(double dt);
-  // The loads of pair k (and of grain i's walls); the number of contact detections that missed
-  // their tolerance (superquadrics, dem_solver_superquadrics.cpp).
+  // The pair loads of block b of the pair list, and of pair k; the number of contact detections
+  // that missed their tolerance (superquadrics, dem_solver_superquadrics.cpp).
+  int block_loads(int b, double dt);
   int pair_loads(std::size_t k, double dt);
   int shaped_pair_loads(std::size_t k, const Vec3& rij, double dt);
   SuperquadricContact shaped_contact(std::size_t i, std::size_t j, const Vec3& centre_j,

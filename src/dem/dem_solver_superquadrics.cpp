@@ -15,7 +15,7 @@ namespace partimix::dem {
 
 void DemSolver::update_frames() {
   frames_.resize(store_.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel(store_.size()))
   for (std::size_t i = 0; i < store_.size(); ++i) {
     frames_[i].rotation = orientation(i).toRotationMatrix();
     if (const auto& rotor = rotors_[(*species_)[i]])
@@ -80,7 +80,7 @@ int DemSolver::shaped_pair_loads(std::size_t k, const Vec3& rij, double dt) {
       apart_along_centre_line(frames_[i].inverse_shape, rij, frames_[j].inverse_shape)) {
     history.midway = Vec3::Zero();
     history.mu = 0.0;
-    pairs_->set_touching(k, false);
+    pairs_->set_apart(k);
     return 0;
   }
   const SuperquadricContact found = shaped_contact(i, j, centre_j, history);
@@ -91,7 +91,7 @@ int DemSolver::shaped_pair_loads(std::size_t k, const Vec3& rij, double dt) {
   history.midway = solved ? Vec3(found.midway - x[i]) : Vec3::Zero();
   history.mu = solved ? found.mu : 0.0;
   if (!found.touching) {
-    pairs_->set_touching(k, false);
+    pairs_->set_apart(k);
     return failures;
   }
   Contact c;
@@ -103,20 +103,19 @@ int DemSolver::shaped_pair_loads(std::size_t k, const Vec3& rij, double dt) {
   c.relative_angular_velocity = omega[i] - omega[j];
   const std::size_t pair = (*species_)[i] * config_.species.size() + (*species_)[j];
   const Vec3 to_surface = 0.5 * found.overlap * found.normal;  // X_i = point + to_surface
-  c.pair = pair_properties(particle_materials_[pair], contact_radius(i, arm_i + to_surface),
-                           contact_radius(j, arm_j - to_surface), m[i], m[j]);
+  c.pair = grain_pair_properties(particle_materials_[pair], contact_radius(i, arm_i + to_surface),
+                                 contact_radius(j, arm_j - to_surface), m[i], m[j]);
   c.interaction = &config_.particle_interactions[pair];
   const double radius_i = equivalent_radius(i);
   const double radius_j = equivalent_radius(j);
   const double inertia_i = 1.4 * m[i] * radius_i * radius_i;
   const double inertia_j = 1.4 * m[j] * radius_j * radius_j;
-  c.rolling_inertia = 1.0 / (1.0 / inertia_i + 1.0 / inertia_j);
+  c.rolling_inertia = inertia_i * inertia_j / (inertia_i + inertia_j);
   const ContactLoad load = load_of(c, history.spring, history.rolling_spring, dt);
-  PairLoad& out = pairs_->load(k);
-  out.force = load.force;
-  out.torque_i = arm_i.cross(load.force) + load.rolling;
-  out.torque_j = arm_j.cross(-load.force) - load.rolling;
-  pairs_->set_touching(k, true);
+  pairs_->deliver(
+      k,
+      {load.force, arm_i.cross(load.force) + load.rolling, arm_j.cross(-load.force) - load.rolling},
+      *force_, *torque_);
   return failures;
 }
 

@@ -12,8 +12,10 @@ struct NormalResponse {
   // The tangent normal stiffness dF_n/d(overlap) of the elastic part [N/m]: the rolling spring
   // of the elastic-plastic rolling resistance is made from it.
   double normal_stiffness = 0.0;
-  // The stiffness k_t of the tangential spring [N/m] (docs/dem.md, "Tangential force").
+  // The stiffness k_t of the tangential spring [N/m] and its damping coefficient c_t [N s/m]
+  // (docs/dem.md, "Tangential force").
   double tangential_stiffness = 0.0;
+  double tangential_damping = 0.0;
 };
 
 class NormalContactLaw {

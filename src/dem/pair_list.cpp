@@ -1,9 +1,11 @@
 #include "dem/pair_list.hpp"
 
 #include <algorithm>
+#include <numeric>
 #include <unordered_map>
 
 #include <fmt/format.h>
+#include <omp.h>
 
 #include "core/error.hpp"
 
@@ -25,7 +27,7 @@ bool PairList::stale(std::span<const Vec3> positions, const Domain& domain) cons
     return true;
   const double limit = 0.25 * skin_ * skin_;
   double largest = 0.0;
-#pragma omp parallel for schedule(static) reduction(max : largest)
+#pragma omp parallel for schedule(static) reduction(max : largest) if (parallel(positions.size()))
   for (std::size_t i = 0; i < positions.size(); ++i)
     largest = std::max(largest, domain.displacement(positions[i], built_at_[i]).squaredNorm());
   return largest > limit;
@@ -42,37 +44,48 @@ void PairList::build(const CellGrid& grid, std::span<const Vec3> positions,
   index_incoming(positions.size());
   carry_history(new_to_old);
   built_at_.assign(positions.begin(), positions.end());
+  block_start_.clear();
 }
 
-// Two passes over the grid (count, then fill), each grain's partners sorted by index.
+// One pass over the grid: each thread lists the partners of a run of grains in its own buffer
+// (each grain's sorted by index), then copies them into place.
 void PairList::find_pairs(const CellGrid& grid, std::span<const Vec3> positions,
                           std::span<const double> radius) {
   const std::size_t n = positions.size();
-  auto for_each_partner = [&](std::size_t i, auto&& fn) {
-    grid.for_each_neighbour(i, positions, [&](std::size_t j, const Vec3&, double r2) {
-      const double reach = radius[i] + radius[j] + skin_;
-      if (j > i && r2 < reach * reach)
-        fn(static_cast<std::uint32_t>(j));
-    });
-  };
-  counts_.assign(n, 0);
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t i = 0; i < n; ++i)
-    for_each_partner(i, [&](std::uint32_t) { ++counts_[i]; });
+  counts_.resize(n);
   start_.resize(n + 1);
-  start_[0] = 0;
-  for (std::size_t i = 0; i < n; ++i)
-    start_[i + 1] = start_[i] + counts_[i];
-  first_.resize(start_[n]);
-  second_.resize(start_[n]);
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t i = 0; i < n; ++i) {
-    std::uint32_t next = start_[i];
-    for_each_partner(i, [&](std::uint32_t j) {
-      first_[next] = static_cast<std::uint32_t>(i);
-      second_[next++] = j;
-    });
-    std::sort(second_.begin() + start_[i], second_.begin() + start_[i + 1]);
+  found_.resize(static_cast<std::size_t>(omp_get_max_threads()));
+#pragma omp parallel if (parallel(n))
+  {
+    const auto thread = static_cast<std::size_t>(omp_get_thread_num());
+    const auto threads = static_cast<std::size_t>(omp_get_num_threads());
+    const std::size_t begin = n * thread / threads;
+    const std::size_t end = n * (thread + 1) / threads;
+    std::vector<std::uint32_t>& found = found_[thread];
+    found.clear();
+    for (std::size_t i = begin; i < end; ++i) {
+      const std::size_t before = found.size();
+      grid.for_each_neighbour(i, positions, [&](std::size_t j, const Vec3&, double r2) {
+        const double reach = radius[i] + radius[j] + skin_;
+        if (j > i && r2 < reach * reach)
+          found.push_back(static_cast<std::uint32_t>(j));
+      });
+      std::sort(found.begin() + static_cast<std::ptrdiff_t>(before), found.end());
+      counts_[i] = static_cast<std::uint32_t>(found.size() - before);
+    }
+#pragma omp barrier
+#pragma omp single
+    {
+      start_[0] = 0;
+      for (std::size_t i = 0; i < n; ++i)
+        start_[i + 1] = start_[i] + counts_[i];
+      first_.resize(start_[n]);
+      second_.resize(start_[n]);
+    }
+    std::copy(found.begin(), found.end(), second_.begin() + start_[begin]);
+    for (std::size_t i = begin; i < end; ++i)
+      std::fill(first_.begin() + start_[i], first_.begin() + start_[i + 1],
+                static_cast<std::uint32_t>(i));
   }
   history_.assign(first_.size(), PairHistory{});
   loads_.resize(first_.size());
@@ -114,7 +127,7 @@ void PairList::carry_history(std::span<const std::uint32_t> new_to_old) {
   old_to_new_.resize(n);
   for (std::size_t k = 0; k < n; ++k)
     old_to_new_[new_to_old.empty() ? k : new_to_old[k]] = static_cast<std::uint32_t>(k);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel(n))
   for (std::size_t old_pair = 0; old_pair < old_first_.size(); ++old_pair) {
     if (!old_touching_[old_pair] && !(old_history_[old_pair].mu > 0.0))
       continue;
@@ -129,12 +142,36 @@ void PairList::carry_history(std::span<const std::uint32_t> new_to_old) {
   }
 }
 
-void PairList::set_touching(std::size_t k, bool touching) {
-  if (!touching && touching_[k]) {
+void PairList::set_apart(std::size_t k) {
+  if (touching_[k]) {
     history_[k].spring = Vec3::Zero();
     history_[k].rolling_spring = Vec3::Zero();
   }
-  touching_[k] = touching ? 1 : 0;
+  touching_[k] = 0;
+}
+
+void PairList::partition(int blocks) {
+  const std::size_t grains = start_.size() - 1;
+  const std::size_t count = std::clamp<std::size_t>(static_cast<std::size_t>(blocks), 1,
+                                                    std::max<std::size_t>(grains, 1));
+  if (block_start_.size() == count + 1)
+    return;
+  block_start_.assign(count + 1, static_cast<std::uint32_t>(grains));
+  block_start_[0] = 0;
+  for (std::size_t b = 1; b < count; ++b) {
+    const std::size_t share = first_.size() * b / count;
+    const auto at = std::lower_bound(start_.begin(), start_.end() - 1, share);
+    block_start_[b] =
+        std::max(block_start_[b - 1], static_cast<std::uint32_t>(at - start_.begin()));
+  }
+  gathered_.assign(grains, 0);
+  for (std::size_t b = 0; b < count; ++b) {
+    const std::uint32_t end = block_start_[b + 1];
+    for (std::uint32_t k = start_[block_start_[b]]; k < start_[end]; ++k) {
+      if (second_[k] >= end)
+        gathered_[second_[k]] = 1;
+    }
+  }
 }
 
 void PairList::gather(std::size_t i, Vec3& force, Vec3& torque) const {
@@ -213,13 +250,16 @@ void PairList::restore(const StateArchive& archive, const std::string& prefix, c
 }
 
 std::size_t PairList::bytes() const {
-  const std::size_t indices = first_.capacity() + second_.capacity() + start_.capacity() +
-                              incoming_.capacity() + incoming_start_.capacity() +
-                              old_first_.capacity() + old_second_.capacity() +
-                              old_start_.capacity() + old_to_new_.capacity() + counts_.capacity();
+  const std::size_t indices =
+      first_.capacity() + second_.capacity() + start_.capacity() + incoming_.capacity() +
+      incoming_start_.capacity() + old_first_.capacity() + old_second_.capacity() +
+      old_start_.capacity() + old_to_new_.capacity() + counts_.capacity() +
+      std::accumulate(found_.begin(), found_.end(), std::size_t{0},
+                      [](std::size_t sum, const auto& buffer) { return sum + buffer.capacity(); });
   return indices * sizeof(std::uint32_t) +
          (history_.capacity() + old_history_.capacity()) * sizeof(PairHistory) +
          loads_.capacity() * sizeof(PairLoad) + touching_.capacity() + old_touching_.capacity() +
+         block_start_.capacity() * sizeof(std::uint32_t) + gathered_.capacity() +
          built_at_.capacity() * sizeof(Vec3);
 }
 

@@ -2,10 +2,11 @@
 // The grain pairs that may touch (docs/dem.md, "The solver"): a half neighbour list with a skin
 // (each pair once, i < j), rebuilt only when a grain has moved half the skin since the last
 // build, with each pair's contact history (tangential and rolling springs, as grain i sees
-// them) and the loads the pair's contact puts on its two grains. Each grain then gathers its
-// loads from its pairs in the order of its partners' indices, whatever the thread count or the
-// step the list was built at, so the sums are the same to the last bit (DESIGN.md, "Data and
-// speed": a deterministic scatter).
+// them). The pairs are split into blocks of consecutive first grains, one per thread; a pair's
+// load goes straight to its grains when both belong to the pair's block, and is kept for a
+// gather otherwise. Either way each grain sums its loads in the order of its partners' indices,
+// whatever the thread count or the step the list was built at, so the sums are the same to the
+// last bit (DESIGN.md, "Data and speed": a deterministic scatter).
 #include <cstdint>
 #include <span>
 #include <string>
@@ -17,6 +18,13 @@
 #include "particles/domain.hpp"
 
 namespace partimix::dem {
+
+// Whether the loops over `grains` grains run on several threads: below a few hundred grains a
+// parallel region costs more than it saves (measured: 2 threads made a one-grain test 8 times
+// slower than one).
+constexpr bool parallel(std::size_t grains) {
+  return grains >= 256;
+}
 
 struct PairHistory {
   Vec3 spring = Vec3::Zero();          // xi of grain i [m]
@@ -56,13 +64,43 @@ class PairList {
   std::uint32_t first(std::size_t k) const { return first_[k]; }
   std::uint32_t second(std::size_t k) const { return second_[k]; }
   PairHistory& history(std::size_t k) { return history_[k]; }
-  PairLoad& load(std::size_t k) { return loads_[k]; }
-  // Marks pair k touching (its load counts) or apart (its springs are cleared; a superquadric
-  // pair's warm start stays while the grains are near).
-  void set_touching(std::size_t k, bool touching);
+  // Marks pair k apart: its springs are cleared (a superquadric pair's warm start stays while
+  // the grains are near).
+  void set_apart(std::size_t k);
   bool touching(std::size_t k) const { return touching_[k] != 0; }
 
-  // Adds to force[i] and torque[i] the loads of i's touching pairs, partners in index order.
+  // Splits the grains into `blocks` runs of consecutive indices with about equal numbers of
+  // pairs as first grain (fewer blocks when there are fewer grains), and marks gathered each
+  // grain that is the second of a pair of another block. Does nothing when neither the list nor
+  // the number has changed since the last call.
+  void partition(int blocks);
+  int blocks() const { return static_cast<int>(block_start_.size()) - 1; }
+  // Block b's grains [block_start(b), block_start(b + 1)) and the pairs they are first of,
+  // [pair_start(block_start(b)), pair_start(block_start(b + 1))).
+  std::uint32_t block_start(int b) const { return block_start_[b]; }
+  std::uint32_t pair_start(std::uint32_t grain) const { return start_[grain]; }
+  bool gathered(std::size_t i) const { return gathered_[i] != 0; }
+
+  // Marks pair k touching and adds its load to force and torque of each grain that is not
+  // gathered (the pairs of a block are delivered in order, by the block's thread alone); keeps
+  // it for the gather when one of them is.
+  void deliver(std::size_t k, const PairLoad& load, std::span<Vec3> force, std::span<Vec3> torque) {
+    touching_[k] = 1;
+    const std::uint32_t i = first_[k];
+    const std::uint32_t j = second_[k];
+    if (gathered_[i] || gathered_[j])
+      loads_[k] = load;
+    if (!gathered_[i]) {
+      force[i] += load.force;
+      torque[i] += load.torque_i;
+    }
+    if (!gathered_[j]) {
+      force[j] -= load.force;
+      torque[j] += load.torque_j;
+    }
+  }
+  // Adds to force[i] and torque[i] (i gathered) the loads of i's touching pairs, partners in
+  // index order.
   void gather(std::size_t i, Vec3& force, Vec3& torque) const;
   // Touching pairs of grain i.
   int contacts(std::size_t i) const;
@@ -100,6 +138,8 @@ class PairList {
   std::vector<PairHistory> history_;
   std::vector<PairLoad> loads_;
   std::vector<std::uint8_t> touching_;
+  std::vector<std::uint32_t> block_start_;  // grains; empty: to be partitioned
+  std::vector<std::uint8_t> gathered_;
   std::vector<Vec3> built_at_;  // positions at the last build
   // The list before the last build (its springs move to the new one), kept to reuse memory.
   std::vector<std::uint32_t> old_first_;
@@ -108,7 +148,8 @@ class PairList {
   std::vector<PairHistory> old_history_;
   std::vector<std::uint8_t> old_touching_;
   std::vector<std::uint32_t> old_to_new_;
-  std::vector<std::uint32_t> counts_;  // scratch: pairs per grain
+  std::vector<std::uint32_t> counts_;              // scratch: pairs per grain
+  std::vector<std::vector<std::uint32_t>> found_;  // scratch: partners found by each thread
 };
 
 }  // namespace partimix::dem

@@ -24,14 +24,30 @@ double shear_compliance(const Material& m) {
 }  // namespace
 
 MaterialPair material_pair(const Material& a, const Material& b, double restitution) {
-  return {1.0 / (normal_compliance(a) + normal_compliance(b)),
-          1.0 / (shear_compliance(a) + shear_compliance(b)), damping_factor(restitution)};
+  const double youngs_modulus = 1.0 / (normal_compliance(a) + normal_compliance(b));
+  const double shear_modulus = 1.0 / (shear_compliance(a) + shear_compliance(b));
+  return {youngs_modulus, shear_modulus, damping_factor(restitution),
+          std::sqrt(4.0 * shear_modulus / youngs_modulus)};
 }
 
 PairProperties pair_properties(const MaterialPair& materials, double radius_a, double radius_b,
                                double mass_a, double mass_b) {
-  return {1.0 / (1.0 / radius_a + 1.0 / radius_b), 1.0 / (1.0 / mass_a + 1.0 / mass_b),
-          materials.youngs_modulus, materials.shear_modulus, materials.damping};
+  return {1.0 / (1.0 / radius_a + 1.0 / radius_b),
+          1.0 / (1.0 / mass_a + 1.0 / mass_b),
+          materials.youngs_modulus,
+          materials.shear_modulus,
+          materials.damping,
+          materials.damping_ratio};
+}
+
+PairProperties grain_pair_properties(const MaterialPair& materials, double radius_a,
+                                     double radius_b, double mass_a, double mass_b) {
+  return {radius_a * radius_b / (radius_a + radius_b),
+          mass_a * mass_b / (mass_a + mass_b),
+          materials.youngs_modulus,
+          materials.shear_modulus,
+          materials.damping,
+          materials.damping_ratio};
 }
 
 PairProperties pair_properties(const ContactSide& a, const ContactSide& b, double restitution) {

@@ -22,6 +22,9 @@ struct PairProperties {
   double youngs_modulus = 0.0;  // E* [Pa]
   double shear_modulus = 0.0;   // G* [Pa]
   double damping = 0.0;         // beta = -ln e / sqrt(pi^2 + ln^2 e), 0 for e = 1
+  // sqrt(4 G* / E*): Hertz-Mindlin's sqrt(k_t / S_n), so its tangential damping is the normal
+  // one times this.
+  double damping_ratio = 0.0;
 };
 
 // The parts of PairProperties that depend on the materials and the restitution alone: computed
@@ -30,6 +33,7 @@ struct MaterialPair {
   double youngs_modulus = 0.0;  // E*
   double shear_modulus = 0.0;   // G*
   double damping = 0.0;         // beta
+  double damping_ratio = 0.0;   // sqrt(4 G* / E*)
 };
 
 // beta of restitution e in (0, 1].
@@ -40,6 +44,9 @@ MaterialPair material_pair(const Material& a, const Material& b, double restitut
 // R* and m* of two sides (radius and mass may be +infinity for a wall) with the material pair.
 PairProperties pair_properties(const MaterialPair& materials, double radius_a, double radius_b,
                                double mass_a, double mass_b);
+// The same for two grains (finite radii and masses), with fewer divisions.
+PairProperties grain_pair_properties(const MaterialPair& materials, double radius_a,
+                                     double radius_b, double mass_a, double mass_b);
 
 PairProperties pair_properties(const ContactSide& a, const ContactSide& b, double restitution);
 

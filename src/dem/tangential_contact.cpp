@@ -30,13 +30,11 @@ void limit_length(Vec3& spring, double cap) {
 
 }  // namespace
 
-Vec3 tangential_force(const PairProperties& pair, const TangentialStep& step, Vec3& spring) {
+Vec3 tangential_force(const TangentialStep& step, Vec3& spring) {
   carry_into_plane(spring, step.normal);
   spring += step.tangential_velocity * step.dt;
   limit_length(spring, step.spring_cap);
-  const double damping =
-      2.0 * std::sqrt(5.0 / 6.0) * pair.damping * std::sqrt(step.stiffness * pair.mass);
-  const Vec3 trial = -step.stiffness * spring - damping * step.tangential_velocity;
+  const Vec3 trial = -step.stiffness * spring - step.damping * step.tangential_velocity;
   const double coulomb = step.friction * std::max(step.normal_force, 0.0);
   const double size2 = trial.squaredNorm();
   if (size2 <= coulomb * coulomb)

@@ -10,7 +10,8 @@
 namespace partimix::dem {
 
 struct TangentialStep {
-  double stiffness = 0.0;     // k_t [N/m] (NormalContactLaw::tangential_stiffness)
+  double stiffness = 0.0;     // k_t [N/m] (NormalResponse::tangential_stiffness)
+  double damping = 0.0;       // c_t [N s/m] (NormalResponse::tangential_damping)
   double normal_force = 0.0;  // F_n [N], positive repulsive
   Vec3 normal = Vec3::UnitZ();
   Vec3 tangential_velocity = Vec3::Zero();  // v_t of the contact point, in the contact plane
@@ -25,9 +26,10 @@ struct TangentialStep {
 double seed_spring_cap(const PairProperties& pair, double friction, double overlap);
 
 // Updates the spring xi of the contact (its history) and returns the tangential force on
-// particle i: the trial force -k_t xi - c_t v_t, c_t = 2 sqrt(5/6) beta sqrt(k_t m*), while it
+// particle i: the trial force -k_t xi - c_t v_t (c_t from the normal law: 2 sqrt(5/6) beta
+// sqrt(k_t m*)), while it
 // is within mu_s max(F_n, 0) (sticking); otherwise (sliding) the trial force scaled to that
 // size, carried by the spring alone: xi = -F_t / k_t.
-Vec3 tangential_force(const PairProperties& pair, const TangentialStep& step, Vec3& spring);
+Vec3 tangential_force(const TangentialStep& step, Vec3& spring);
 
 }  // namespace partimix::dem

@@ -1,8 +1,10 @@
 // The DEM's half neighbour list with a skin (docs/dem.md, "The solver"): it lists exactly the
 // pairs within R_i + R_j + skin (against all pairs), goes stale only when a grain has moved half
 // the skin, carries the springs of touching pairs through a re-sort (sign changed and the
-// superquadric warm start dropped when a pair's order flips), and gathers each grain's loads.
+// superquadric warm start dropped when a pair's order flips), and delivers each grain's loads
+// in the order of its partners, the same to the last bit for any number of blocks.
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <random>
 #include <set>
@@ -104,7 +106,10 @@ TEST(PairList, SpringsFollowTheirGrainsThroughAReSortAndFlipWithThePair) {
   list.history(5).rolling_spring = Vec3(4, 5, 6);
   list.history(5).midway = Vec3(1e-4, 0, 0);
   list.history(5).mu = 0.9;
-  list.set_touching(5, true);
+  list.partition(1);
+  std::vector<Vec3> force(bed.x.size(), Vec3::Zero());
+  std::vector<Vec3> torque(bed.x.size(), Vec3::Zero());
+  list.deliver(5, PairLoad{}, force, torque);
   // Rebuilt in place: the whole history stays, the midway point included.
   list.build(listed_bed.grid, bed.x, bed.radius);
   EXPECT_EQ(list.history(5).midway, Vec3(1e-4, 0, 0));
@@ -138,34 +143,97 @@ TEST(PairList, SpringsFollowTheirGrainsThroughAReSortAndFlipWithThePair) {
   EXPECT_EQ(carried, 1);
 }
 
-TEST(PairList, EachGrainGathersItsTouchingPairsWithTheSignOfItsSide) {
+// Loads of pair k spread over 12 orders of magnitude, so that a sum in another order differs in
+// its last bits.
+PairLoad load_of_pair(std::size_t k) {
+  const double size =
+      std::pow(10.0, static_cast<double>(k % 13) - 6.0) * (1.0 + 1e-3 * static_cast<double>(k));
+  return {Vec3(size, 2.0 / size, 3.0), Vec3(0.0, size / 3.0, 1.0), Vec3(0.1, 0.0, size / 7.0)};
+}
+
+struct Loads {
+  std::vector<Vec3> force;
+  std::vector<Vec3> torque;
+};
+
+// The loads of the touching pairs (two in three) delivered block by block, then gathered.
+Loads delivered(PairList& list, std::size_t grains, int blocks, int& gathered) {
+  Loads loads{std::vector<Vec3>(grains, Vec3::Constant(9.0)),
+              std::vector<Vec3>(grains, Vec3::Constant(9.0))};
+  list.partition(blocks);
+  for (int b = 0; b < list.blocks(); ++b) {
+    const std::uint32_t begin = list.block_start(b);
+    const std::uint32_t end = list.block_start(b + 1);
+    std::fill(loads.force.begin() + begin, loads.force.begin() + end, Vec3::Zero());
+    std::fill(loads.torque.begin() + begin, loads.torque.begin() + end, Vec3::Zero());
+    for (std::size_t k = list.pair_start(begin); k < list.pair_start(end); ++k) {
+      if (k % 3 == 0)
+        list.set_apart(k);
+      else
+        list.deliver(k, load_of_pair(k), loads.force, loads.torque);
+    }
+  }
+  gathered = 0;
+  for (std::size_t i = 0; i < grains; ++i) {
+    if (list.gathered(i)) {
+      list.gather(i, loads.force[i], loads.torque[i]);
+      ++gathered;
+    }
+  }
+  return loads;
+}
+
+TEST(PairList, DeliversEachGrainsLoadsInPartnerOrderWhateverTheBlocks) {
   const Bed bed = random_bed();
   Listed listed_bed(bed);
   PairList& list = listed_bed.list;
-  std::vector<Vec3> force(bed.x.size(), Vec3::Zero());
-  std::vector<Vec3> torque(bed.x.size(), Vec3::Zero());
-  for (std::size_t k = 0; k < list.size(); ++k) {
-    const bool touching = k % 3 != 0;
-    list.set_touching(k, touching);
-    const double size = 1.0 + static_cast<double>(k);
-    list.load(k) = {Vec3(size, 2.0, 3.0), Vec3(0.0, size, 0.0), Vec3(0.0, 0.0, size)};
-    if (touching) {
-      force[list.first(k)] += list.load(k).force;
-      force[list.second(k)] -= list.load(k).force;
-      torque[list.first(k)] += list.load(k).torque_i;
-      torque[list.second(k)] += list.load(k).torque_j;
+  const std::size_t n = bed.x.size();
+  Loads serial{std::vector<Vec3>(n, Vec3::Zero()), std::vector<Vec3>(n, Vec3::Zero())};
+  for (std::size_t k = 0; k < list.size(); ++k) {  // in pair order: partners in index order
+    if (k % 3 == 0)
+      continue;
+    const PairLoad load = load_of_pair(k);
+    serial.force[list.first(k)] += load.force;
+    serial.force[list.second(k)] -= load.force;
+    serial.torque[list.first(k)] += load.torque_i;
+    serial.torque[list.second(k)] += load.torque_j;
+  }
+  for (const int blocks : {1, 2, 3, 7}) {
+    int gathered = 0;
+    const Loads loads = delivered(list, n, blocks, gathered);
+    EXPECT_EQ(list.blocks(), blocks);
+    if (blocks == 1)
+      EXPECT_EQ(gathered, 0);
+    else
+      EXPECT_GT(gathered, 0) << blocks;
+    EXPECT_LT(gathered, static_cast<int>(n) / 2) << blocks;
+    for (std::size_t i = 0; i < n; ++i) {
+      ASSERT_EQ(loads.force[i], serial.force[i]) << blocks << " blocks, grain " << i;
+      ASSERT_EQ(loads.torque[i], serial.torque[i]) << blocks << " blocks, grain " << i;
     }
   }
   int touching_pairs = 0;
-  for (std::size_t i = 0; i < bed.x.size(); ++i) {
-    Vec3 f = Vec3::Zero();
-    Vec3 t = Vec3::Zero();
-    list.gather(i, f, t);
-    EXPECT_EQ(f, force[i]) << i;
-    EXPECT_EQ(t, torque[i]) << i;
+  for (std::size_t i = 0; i < n; ++i)
     touching_pairs += list.contacts(i);
-  }
   EXPECT_EQ(touching_pairs, 2 * static_cast<int>(list.size() - (list.size() + 2) / 3));
+}
+
+TEST(PairList, BlocksShareThePairsEvenly) {
+  const Bed bed = random_bed();
+  Listed listed_bed(bed);
+  PairList& list = listed_bed.list;
+  list.partition(4);
+  ASSERT_EQ(list.blocks(), 4);
+  EXPECT_EQ(list.block_start(0), 0u);
+  EXPECT_EQ(list.block_start(4), bed.x.size());
+  for (int b = 0; b < 4; ++b) {
+    const double pairs =
+        list.pair_start(list.block_start(b + 1)) - list.pair_start(list.block_start(b));
+    const double all = static_cast<double>(list.size());
+    EXPECT_NEAR(pairs, all / 4.0, 0.05 * all) << b;
+  }
+  list.partition(1000);  // more blocks than grains: one grain each
+  EXPECT_EQ(list.blocks(), static_cast<int>(bed.x.size()));
 }
 
 }  // namespace

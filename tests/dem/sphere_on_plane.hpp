@@ -51,9 +51,14 @@ struct SphereOnPlane {
     const double u_n = contact_velocity.dot(n);
     const NormalResponse response = normal_law->respond(pair, overlap, u_n);
     normal_force = response.force;
-    const TangentialStep tangential{response.tangential_stiffness, normal_force, n,
-                                    contact_velocity - u_n * n,    friction,     dt};
-    const Vec3 f_t = tangential_force(pair, tangential, spring);
+    const TangentialStep tangential{response.tangential_stiffness,
+                                    response.tangential_damping,
+                                    normal_force,
+                                    n,
+                                    contact_velocity - u_n * n,
+                                    friction,
+                                    dt};
+    const Vec3 f_t = tangential_force(tangential, spring);
     const RollingStep roll{normal_force,
                            response.normal_stiffness,
                            pair.radius,

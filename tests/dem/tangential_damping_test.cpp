@@ -12,6 +12,8 @@
 // (measured 3.4e-4: the damping takes the half-step velocity, an error of first order in dt; at
 // e = 1 the error is 8e-6). Compared with the undamped curve the same run is off by 0.26 v_0,
 // so a c_t left out, or of the wrong size, fails.
+// Both laws give c_t = 2 sqrt(5/6) beta sqrt(k_t m*) to round-off (Hertz-Mindlin forms it from
+// the normal damping times sqrt(4 G* / E*)), for two different materials.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -90,6 +92,19 @@ TEST(TangentialDamping, ElasticContactRingsWithoutDecay) {
   Oscillator theory{};
   EXPECT_LT(worst_speed_error(1.0, theory), 1e-3);
   EXPECT_EQ(theory.damping_ratio, 0.0);
+}
+
+TEST(TangentialDamping, BothLawsGiveTheCoefficientOfTheirTangentialStiffness) {
+  const PairProperties pair =
+      pair_properties({{7.0e9, 0.25}, 0.002, 1.0e-4}, {{2.0e8, 0.45}, 0.003, 3.0e-4}, 0.6);
+  for (const char* name : {"hertz", "linear"}) {
+    const auto law = normal_contact_registry().create(name, {kNormalStiffness});
+    const NormalResponse response = law->respond(pair, 1.0e-5, -0.1);
+    const double expected = 2.0 * std::sqrt(5.0 / 6.0) * pair.damping *
+                            std::sqrt(response.tangential_stiffness * pair.mass);
+    EXPECT_GT(expected, 0.0) << name;
+    EXPECT_NEAR(response.tangential_damping, expected, 1e-14 * expected) << name;
+  }
 }
 
 }  // namespace
