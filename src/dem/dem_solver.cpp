@@ -206,52 +206,54 @@ void DemSolver::compute_time_step() {
 }
 
 void DemSolver::step(double dt) {
-  half_kick(dt, false);
-  drift(dt);
+  kick_and_drift(dt);
   time_ += dt;
   if (++steps_ % config_.sort_interval == 0)
     sort_by_cell();
   for (WallState& wall : walls_)
     wall.pose = walls_frozen_ ? at_rest(wall.motion->pose(0.0)) : wall.motion->pose(time_);
   compute_loads(dt);
-  half_kick(dt, true);
+#pragma omp parallel for schedule(static) if (parallel(store_.size()))
+  for (std::size_t i = 0; i < store_.size(); ++i)
+    half_kick(i, dt, true);
 }
 
-void DemSolver::half_kick(double dt, bool superquadric_spins) {
-  auto& v = store_.velocity();
-  const auto& m = store_.mass();
+// The first half kick and the drift, in one pass over the grains.
+void DemSolver::kick_and_drift(double dt) {
 #pragma omp parallel for schedule(static) if (parallel(store_.size()))
   for (std::size_t i = 0; i < store_.size(); ++i) {
-    v[i] += 0.5 * dt * ((*force_)[i] / m[i] + gravity_);
-    if (const auto& rotor = rotors_[(*species_)[i]]) {
-      kick_angular_momentum((*angular_momentum_)[i], (*torque_)[i], dt);
-      if (superquadric_spins)
-        (*angular_velocity_)[i] = rotor->angular_velocity(orientation(i), (*angular_momentum_)[i]);
-      continue;
-    }
-    const double inertia = 0.4 * m[i] * (*radius_)[i] * (*radius_)[i];
-    (*angular_velocity_)[i] += 0.5 * dt / inertia * (*torque_)[i];
-    if (angular_momentum_)  // beside superquadrics, for the analyses
-      (*angular_momentum_)[i] = inertia * (*angular_velocity_)[i];
+    half_kick(i, dt, false);
+    drift(i, dt);
   }
 }
 
-// Positions, and the orientations of superquadrics by the torque-free motion of their rotor
-// (dem/rigid_rotation.hpp; their angular velocities follow in update_frames). A sphere's
+void DemSolver::half_kick(std::size_t i, double dt, bool superquadric_spins) {
+  const double m = store_.mass()[i];
+  store_.velocity()[i] += 0.5 * dt * ((*force_)[i] / m + gravity_);
+  if (const auto& rotor = rotors_[(*species_)[i]]) {
+    kick_angular_momentum((*angular_momentum_)[i], (*torque_)[i], dt);
+    if (superquadric_spins)
+      (*angular_velocity_)[i] = rotor->angular_velocity(orientation(i), (*angular_momentum_)[i]);
+    return;
+  }
+  const double inertia = 0.4 * m * (*radius_)[i] * (*radius_)[i];
+  (*angular_velocity_)[i] += 0.5 * dt / inertia * (*torque_)[i];
+  if (angular_momentum_)  // beside superquadrics, for the analyses
+    (*angular_momentum_)[i] = inertia * (*angular_velocity_)[i];
+}
+
+// The position, and a superquadric's orientation by the torque-free motion of its rotor
+// (dem/rigid_rotation.hpp; its angular velocity follows in update_frames). A sphere's
 // orientation is not needed and not kept: it stays the identity (turning it cost a tenth of a
 // step).
-void DemSolver::drift(double dt) {
-  auto& x = store_.position();
-  const auto& v = store_.velocity();
-#pragma omp parallel for schedule(static) if (parallel(store_.size()))
-  for (std::size_t i = 0; i < store_.size(); ++i) {
-    x[i] += dt * v[i];
-    domain_.wrap(x[i]);
-    if (const auto& rotor = rotors_[(*species_)[i]]) {
-      Quaternion q = orientation(i);
-      rotor->drift(q, (*angular_momentum_)[i], dt);
-      set_orientation(i, q);
-    }
+void DemSolver::drift(std::size_t i, double dt) {
+  Vec3& x = store_.position()[i];
+  x += dt * store_.velocity()[i];
+  domain_.wrap(x);
+  if (const auto& rotor = rotors_[(*species_)[i]]) {
+    Quaternion q = orientation(i);
+    rotor->drift(q, (*angular_momentum_)[i], dt);
+    set_orientation(i, q);
   }
 }
 

@@ -106,10 +106,12 @@ class DemSolver final : public Solver {
   void assign_shape(std::size_t i);
   void make_walls();
   void compute_time_step();
-  // v and omega (spheres) or L (superquadrics) by dt/2 of the loads; the superquadrics' omega
-  // from L too when `superquadric_spins` (not before the drift, which turns them).
-  void half_kick(double dt, bool superquadric_spins);
-  void drift(double dt);
+  // Grain i's v and omega (spheres) or L (superquadrics) by dt/2 of the loads; a
+  // superquadric's omega from L too when `superquadric_spins` (not before the drift, which
+  // turns it).
+  void half_kick(std::size_t i, double dt, bool superquadric_spins);
+  void drift(std::size_t i, double dt);
+  void kick_and_drift(double dt);
   void sort_by_cell();
   void compute_loads(double dt);
   // The pair loads of block b of the pair list, and of pair k; the number of contact detections

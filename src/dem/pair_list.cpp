@@ -48,7 +48,7 @@ void PairList::build(const CellGrid& grid, std::span<const Vec3> positions,
 }
 
 // One pass over the grid: each thread lists the partners of a run of grains in its own buffer
-// (each grain's sorted by index), then copies them into place.
+// (each grain's sorted by index), then copies them into place and clears their histories.
 void PairList::find_pairs(const CellGrid& grid, std::span<const Vec3> positions,
                           std::span<const double> radius) {
   const std::size_t n = positions.size();
@@ -65,11 +65,12 @@ void PairList::find_pairs(const CellGrid& grid, std::span<const Vec3> positions,
     found.clear();
     for (std::size_t i = begin; i < end; ++i) {
       const std::size_t before = found.size();
-      grid.for_each_neighbour(i, positions, [&](std::size_t j, const Vec3&, double r2) {
+      const auto partner = [&](std::size_t j, const Vec3&, double r2) {
         const double reach = radius[i] + radius[j] + skin_;
-        if (j > i && r2 < reach * reach)
+        if (r2 < reach * reach)
           found.push_back(static_cast<std::uint32_t>(j));
-      });
+      };
+      grid.for_each_neighbour(i, positions, partner, n, i + 1);
       std::sort(found.begin() + static_cast<std::ptrdiff_t>(before), found.end());
       counts_[i] = static_cast<std::uint32_t>(found.size() - before);
     }
@@ -81,15 +82,17 @@ void PairList::find_pairs(const CellGrid& grid, std::span<const Vec3> positions,
         start_[i + 1] = start_[i] + counts_[i];
       first_.resize(start_[n]);
       second_.resize(start_[n]);
+      history_.resize(start_[n]);
+      loads_.resize(start_[n]);
+      touching_.resize(start_[n]);
     }
     std::copy(found.begin(), found.end(), second_.begin() + start_[begin]);
     for (std::size_t i = begin; i < end; ++i)
       std::fill(first_.begin() + start_[i], first_.begin() + start_[i + 1],
                 static_cast<std::uint32_t>(i));
+    std::fill(history_.begin() + start_[begin], history_.begin() + start_[end], PairHistory{});
+    std::fill(touching_.begin() + start_[begin], touching_.begin() + start_[end], 0);
   }
-  history_.assign(first_.size(), PairHistory{});
-  loads_.resize(first_.size());
-  touching_.assign(first_.size(), 0);
 }
 
 // The pairs are in order of their first grain, so each grain's incoming pairs come out in order

@@ -29,12 +29,13 @@ class CellGrid {
   double radius() const { return radius_; }
   const std::array<int, 3>& cells_per_axis() const { return cells_; }
 
-  // Calls fn(j, r_ij, r2) for every particle j < below (i itself included) with
-  // r2 = |r_ij|^2 < radius^2, where r_ij = x_i - x_j through the nearest periodic image.
-  // Particles at or past `below` are skipped without reading their positions.
+  // Calls fn(j, r_ij, r2) for every particle above <= j < below (i itself included when in
+  // that range) with r2 = |r_ij|^2 < radius^2, where r_ij = x_i - x_j through the nearest
+  // periodic image. Particles outside the range are skipped without reading their positions.
   template <class Fn>
   void for_each_neighbour(std::size_t i, std::span<const Vec3> positions, Fn&& fn,
-                          std::size_t below = std::numeric_limits<std::size_t>::max()) const;
+                          std::size_t below = std::numeric_limits<std::size_t>::max(),
+                          std::size_t above = 0) const;
 
   std::size_t bytes() const;
 
@@ -67,7 +68,7 @@ class CellGrid {
 
 template <class Fn>
 void CellGrid::for_each_neighbour(std::size_t i, std::span<const Vec3> positions, Fn&& fn,
-                                  std::size_t below) const {
+                                  std::size_t below, std::size_t above) const {
   const Vec3& xi = positions[i];
   const double radius2 = radius_ * radius_;
   // Visits the particles of sorted_[first, last) that lie within the radius of i.
@@ -76,7 +77,7 @@ void CellGrid::for_each_neighbour(std::size_t i, std::span<const Vec3> positions
     const Vec3 shifted = xi + Vec3(shift_x, shift_y, shift_z);
     for (std::uint32_t k = first; k < last; ++k) {
       const std::uint32_t j = sorted_[k];
-      if (j >= below)
+      if (j >= below || j < above)
         continue;
       const Vec3 rij = shifted - positions[j];
       const double r2 = rij.squaredNorm();

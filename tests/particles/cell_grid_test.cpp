@@ -88,27 +88,31 @@ TEST(CellGrid, MatchesBruteForcePeriodic3D) {
   expect_same_as_brute_force(domain, 0.17, 4);
 }
 
-// With an index bound the search returns exactly the pairs with j below it.
-TEST(CellGrid, IndexBoundKeepsExactlyTheLowerIndices) {
+// With index bounds the search returns exactly the pairs with j in [above, below).
+TEST(CellGrid, IndexBoundsKeepExactlyTheIndicesBetweenThem) {
   Domain domain;
   domain.hi = Vec3(1.0, 0.7, 0.5);
   domain.periodic = {true, false, false};
   const auto x = random_points(domain, 600, 6);
-  const std::size_t below = 250;
   CellGrid grid(domain, 0.12);
   grid.build(x);
-  Pairs found;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    grid.for_each_neighbour(
-        i, x, [&](std::size_t j, const Vec3&, double) { found.emplace_back(i, j); }, below);
+  for (const auto& [above, below] :
+       {std::pair<std::size_t, std::size_t>{0, 250}, {120, 600}, {120, 250}}) {
+    Pairs found;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      grid.for_each_neighbour(
+          i, x, [&](std::size_t j, const Vec3&, double) { found.emplace_back(i, j); }, below,
+          above);
+    }
+    std::sort(found.begin(), found.end());
+    Pairs expected;
+    for (const auto& pair : brute_force(domain, x, 0.12)) {
+      if (pair.second >= above && pair.second < below)
+        expected.push_back(pair);
+    }
+    ASSERT_GT(expected.size(), 100u);
+    EXPECT_EQ(found, expected) << above << " to " << below;
   }
-  std::sort(found.begin(), found.end());
-  Pairs expected;
-  for (const auto& pair : brute_force(domain, x, 0.12)) {
-    if (pair.second < below)
-      expected.push_back(pair);
-  }
-  EXPECT_EQ(found, expected);
 }
 
 TEST(CellGrid, RejectsPeriodicAxisShorterThanThreeCellsNamingTheMinimum) {
