@@ -11,7 +11,7 @@ NormalResponse HertzContact::respond(const PairProperties& pair, double overlap,
   const double damping =
       2.0 * std::sqrt(5.0 / 6.0) * pair.damping * std::sqrt(pair.mass * stiffness);
   return {2.0 / 3.0 * stiffness * overlap - damping * normal_velocity, stiffness,
-          8.0 * pair.shear_modulus * contact_radius, damping * pair.damping_ratio};
+          8.0 * pair.shear_modulus * contact_radius, damping * pair.tangential_damping_scale};
 }
 
 }  // namespace partimix::dem

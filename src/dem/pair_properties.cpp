@@ -37,7 +37,7 @@ PairProperties pair_properties(const MaterialPair& materials, double radius_a, d
           materials.youngs_modulus,
           materials.shear_modulus,
           materials.damping,
-          materials.damping_ratio};
+          materials.tangential_damping_scale};
 }
 
 PairProperties grain_pair_properties(const MaterialPair& materials, double radius_a,
@@ -47,7 +47,7 @@ PairProperties grain_pair_properties(const MaterialPair& materials, double radiu
           materials.youngs_modulus,
           materials.shear_modulus,
           materials.damping,
-          materials.damping_ratio};
+          materials.tangential_damping_scale};
 }
 
 PairProperties pair_properties(const ContactSide& a, const ContactSide& b, double restitution) {

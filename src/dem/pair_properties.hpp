@@ -24,16 +24,16 @@ struct PairProperties {
   double damping = 0.0;         // beta = -ln e / sqrt(pi^2 + ln^2 e), 0 for e = 1
   // sqrt(4 G* / E*): Hertz-Mindlin's sqrt(k_t / S_n), so its tangential damping is the normal
   // one times this.
-  double damping_ratio = 0.0;
+  double tangential_damping_scale = 0.0;
 };
 
 // The parts of PairProperties that depend on the materials and the restitution alone: computed
 // once per pair of species (or species and wall), not per contact.
 struct MaterialPair {
-  double youngs_modulus = 0.0;  // E*
-  double shear_modulus = 0.0;   // G*
-  double damping = 0.0;         // beta
-  double damping_ratio = 0.0;   // sqrt(4 G* / E*)
+  double youngs_modulus = 0.0;            // E*
+  double shear_modulus = 0.0;             // G*
+  double damping = 0.0;                   // beta
+  double tangential_damping_scale = 0.0;  // sqrt(4 G* / E*)
 };
 
 // beta of restitution e in (0, 1].
