@@ -88,6 +88,7 @@ void DemSolver::add_fields(const Grains& grains) {
   torque_ = &store_.add_vector("contact_torque", "N m").values;
   orientation_w_ = &store_.add_scalar("orientation_w", "", false).values;
   orientation_v_ = &store_.add_vector("orientation_v", "", false).values;
+  pairs_known_apart_ = any_shaped(shapes_);
   if (any_shaped(shapes_)) {
     angular_momentum_ = &store_.add_vector("angular_momentum", "kg m^2/s", false).values;
     half_axes_ = &store_.add_vector("half_axes", "m").values;
@@ -245,16 +246,23 @@ void DemSolver::half_kick(std::size_t i, double dt, bool superquadric_spins) {
 // The position, and a superquadric's orientation by the torque-free motion of its rotor
 // (dem/rigid_rotation.hpp; its angular velocity follows in update_frames). A sphere's
 // orientation is not needed and not kept: it stays the identity (turning it cost a tenth of a
-// step).
+// step). The grain's travel bounds how far its surface moved: |dx| plus, for a turning grain,
+// 2 R |q' - q| (docs/dem.md, "Pairs known apart").
 void DemSolver::drift(std::size_t i, double dt) {
   Vec3& x = store_.position()[i];
-  x += dt * store_.velocity()[i];
+  const Vec3 dx = dt * store_.velocity()[i];
+  x += dx;
   domain_.wrap(x);
+  double turn = 0.0;
   if (const auto& rotor = rotors_[(*species_)[i]]) {
-    Quaternion q = orientation(i);
+    const Quaternion before = orientation(i);
+    Quaternion q = before;
     rotor->drift(q, (*angular_momentum_)[i], dt);
     set_orientation(i, q);
+    turn = 2.0 * (*radius_)[i] * (q.coeffs() - before.coeffs()).norm();
   }
+  if (pairs_known_apart_)
+    pairs_->add_travel(i, dx.norm() + turn);
 }
 
 // Sorts the grains by cell (neighbours near in memory) and lists the pairs again.
@@ -307,9 +315,26 @@ int DemSolver::block_loads(int b, double dt) {
   std::fill(force_->begin() + begin, force_->begin() + end, Vec3::Zero());
   std::fill(torque_->begin() + begin, torque_->begin() + end, Vec3::Zero());
   int failures = 0;
-  for (std::size_t k = pairs_->pair_start(begin); k < pairs_->pair_start(end); ++k)
+  const std::size_t last = pairs_->pair_start(end);
+  for (std::size_t k = pairs_->pair_start(begin); k < last; ++k) {
+    if (pairs_known_apart_ && k + kPrefetchAhead < last)
+      prefetch_pair(k + kPrefetchAhead);
     failures += pair_loads(k, dt);
+  }
   return failures;
+}
+
+// The history and grain j's frame of a pair a few ahead, unless it is known apart: the loop is
+// bound by the wait for them (measured: 11% faster on the ellipsoid drum of bench/).
+void DemSolver::prefetch_pair(std::size_t k) const {
+  if (pairs_->known_apart(k))
+    return;
+  const auto* history = reinterpret_cast<const char*>(&pairs_->history(k));
+  const auto* frame = reinterpret_cast<const char*>(&frames_[pairs_->second(k)]);
+  for (std::size_t line = 0; line < sizeof(PairHistory); line += 64)
+    __builtin_prefetch(history + line);
+  for (std::size_t line = 0; line < sizeof(GrainFrame); line += 64)
+    __builtin_prefetch(frame + line);
 }
 
 int DemSolver::pair_loads(std::size_t k, double dt) {
@@ -318,6 +343,8 @@ int DemSolver::pair_loads(std::size_t k, double dt) {
   const auto& m = store_.mass();
   const auto& radius = *radius_;
   const auto& omega = *angular_velocity_;
+  if (pairs_known_apart_ && pairs_->known_apart(k))
+    return 0;
   const std::size_t i = pairs_->first(k);
   const std::size_t j = pairs_->second(k);
   const Vec3 rij = domain_.displacement(x[i], x[j]);
@@ -325,6 +352,8 @@ int DemSolver::pair_loads(std::size_t k, double dt) {
   const double r2 = rij.squaredNorm();
   if (r2 >= reach * reach) {
     pairs_->set_apart(k);
+    if (pairs_known_apart_)
+      pairs_->set_gap(k, std::sqrt(r2) - reach);
     return 0;
   }
   if (shapes_[(*species_)[i]] || shapes_[(*species_)[j]])

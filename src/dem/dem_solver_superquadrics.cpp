@@ -43,14 +43,15 @@ Ellipsoid DemSolver::ellipsoid(std::size_t i, const Vec3& centre) const {
   return {centre, frames_[i].rotation, (*half_axes_)[i], frames_[i].inverse_shape};
 }
 
-// Two ellipsoids (or spheres) by their contact function, other pairs by the general midway
-// point (dem/superquadric_contact.hpp), each warm-started from the pair's history.
+// Two ellipsoids (or spheres) by their contact function (the bounding tests made by the caller),
+// other pairs by the general midway point (dem/superquadric_contact.hpp), each warm-started from
+// the pair's history.
 SuperquadricContact DemSolver::shaped_contact(std::size_t i, std::size_t j, const Vec3& centre_j,
                                               const PairHistory& history) const {
   const Vec3& centre_i = store_.position()[i];
   if (ellipsoidal(i) && ellipsoidal(j)) {
-    return find_ellipsoid_contact(ellipsoid(i, centre_i), ellipsoid(j, centre_j),
-                                  history.mu > 0.0 ? std::optional(history.mu) : std::nullopt);
+    return solve_ellipsoid_contact(ellipsoid(i, centre_i), ellipsoid(j, centre_j),
+                                   history.mu > 0.0 ? std::optional(history.mu) : std::nullopt);
   }
   // A sphere meeting a blocky grain is the superquadric of its radius (made here: rare).
   std::optional<Superquadric> sphere_i;
@@ -78,22 +79,21 @@ int DemSolver::shaped_pair_loads(std::size_t k, const Vec3& rij, double dt) {
   PairHistory& history = pairs_->history(k);
   if (ellipsoidal(i) && ellipsoidal(j) &&
       apart_along_centre_line(frames_[i].inverse_shape, rij, frames_[j].inverse_shape)) {
-    history.midway = Vec3::Zero();
-    history.mu = 0.0;
     pairs_->set_apart(k);
+    pairs_->set_gap(k, centre_line_gap(frames_[i].inverse_shape, rij, frames_[j].inverse_shape));
     return 0;
   }
   const SuperquadricContact found = shaped_contact(i, j, centre_j, history);
   const int failures = found.converged ? 0 : 1;
-  // The warm start of the next step: kept while Newton runs for the pair (its bounding boxes
-  // overlap), touching or not.
-  const bool solved = found.converged && found.near;
-  history.midway = solved ? Vec3(found.midway - x[i]) : Vec3::Zero();
-  history.mu = solved ? found.mu : 0.0;
   if (!found.touching) {
     pairs_->set_apart(k);
+    pairs_->set_gap(k, found.gap);
     return failures;
   }
+  // The warm start of the next step, kept while the grains touch: an apart pair keeps none, so
+  // skipping it while it is known apart changes nothing (docs/dem.md, "Pairs known apart").
+  history.midway = found.converged ? Vec3(found.midway - x[i]) : Vec3::Zero();
+  history.mu = found.converged ? found.mu : 0.0;
   Contact c;
   c.normal = -found.normal;
   c.overlap = found.overlap;

@@ -19,15 +19,36 @@ struct ContactFunction {
   Vec3 dy_dt;
 };
 
-ContactFunction contact_function(const Ellipsoid& i, const Ellipsoid& j, const Vec3& d, double t) {
-  const Mat3 c_inverse = ((1.0 - t) * i.inverse_shape + t * j.inverse_shape).inverse();
+// The inverse of a symmetric 3 x 3 matrix by its cofactors (6 of the 9 distinct).
+Mat3 symmetric_inverse(const Mat3& m) {
+  const double c00 = m(1, 1) * m(2, 2) - m(1, 2) * m(1, 2);
+  const double c01 = m(0, 2) * m(1, 2) - m(0, 1) * m(2, 2);
+  const double c02 = m(0, 1) * m(1, 2) - m(0, 2) * m(1, 1);
+  const double c11 = m(0, 0) * m(2, 2) - m(0, 2) * m(0, 2);
+  const double c12 = m(0, 1) * m(0, 2) - m(0, 0) * m(1, 2);
+  const double c22 = m(0, 0) * m(1, 1) - m(0, 1) * m(0, 1);
+  const double r = 1.0 / (m(0, 0) * c00 + m(0, 1) * c01 + m(0, 2) * c02);
+  Mat3 inverse;
+  inverse << r * c00, r * c01, r * c02, r * c01, r * c11, r * c12, r * c02, r * c12, r * c22;
+  return inverse;
+}
+
+// The pair's data for the contact function: d and the two inverse shapes, B_i and B_j - B_i.
+struct Pencil {
+  Vec3 d;
+  const Mat3& inverse_shape_i;
+  Mat3 difference;
+};
+
+ContactFunction contact_function(const Pencil& p, double t) {
+  const Mat3 c_inverse = symmetric_inverse(p.inverse_shape_i + t * p.difference);
   const double u = t * (1.0 - t);
-  ContactFunction f{0.0, 0.0, 0.0, c_inverse * d, Vec3::Zero()};
-  const double s = d.dot(f.y);
+  ContactFunction f{0.0, 0.0, 0.0, c_inverse * p.d, Vec3::Zero()};
+  const double s = p.d.dot(f.y);
   f.value = u * s;
   if (f.value > 1.0)
     return f;
-  const Vec3 dy = (j.inverse_shape - i.inverse_shape) * f.y;
+  const Vec3 dy = p.difference * f.y;
   f.dy_dt = -(c_inverse * dy);
   const double q = f.y.dot(dy);
   f.slope = (1.0 - 2.0 * t) * s - u * q;
@@ -55,11 +76,11 @@ struct Maximum {
 // every t, so F > 1 at any iterate proves the grains apart: the search stops there. A step
 // below kLastStep is the last: it is taken to first order (y + step dy/dt, F + step F'), whose
 // error, of order step^2, lies below round-off.
-Maximum maximise(const Ellipsoid& i, const Ellipsoid& j, const Vec3& d, double t) {
+Maximum maximise(const Pencil& p, double t) {
   double lo = 0.0;
   double hi = 1.0;
   for (int n = 0; n < kMaxIterations; ++n) {
-    ContactFunction f = contact_function(i, j, d, t);
+    ContactFunction f = contact_function(p, t);
     if (f.value > 1.0)
       return {t, f, n + 1, true};
     const double step = f.curvature < 0.0 ? -f.slope / f.curvature : 0.0;
@@ -71,7 +92,7 @@ Maximum maximise(const Ellipsoid& i, const Ellipsoid& j, const Vec3& d, double t
     (f.slope > 0.0 ? lo : hi) = t;
     t = t + step > lo && t + step < hi ? t + step : 0.5 * (lo + hi);
   }
-  return {t, contact_function(i, j, d, t), kMaxIterations, false};
+  return {t, contact_function(p, t), kMaxIterations, false};
 }
 
 // The surface points x* + alpha n of i and x* + beta n of j, from their quadratics in the forms
@@ -100,6 +121,12 @@ bool apart_along_centre_line(const Mat3& inverse_shape_i, const Vec3& d,
   return excess > 0.0 && excess * excess > 4.0 * q_i * q_j;
 }
 
+double centre_line_gap(const Mat3& inverse_shape_i, const Vec3& d, const Mat3& inverse_shape_j) {
+  const double distance = d.norm();
+  return distance -
+         (std::sqrt(d.dot(inverse_shape_i * d)) + std::sqrt(d.dot(inverse_shape_j * d))) / distance;
+}
+
 Mat3 ellipsoid_inverse_shape(const Mat3& rotation, const Vec3& half_axes) {
   return rotation * half_axes.cwiseAbs2().asDiagonal() * rotation.transpose();
 }
@@ -116,9 +143,22 @@ SuperquadricContact find_ellipsoid_contact(const Ellipsoid& i, const Ellipsoid& 
                                            std::optional<double> mu) {
   const Vec3 d = j.centre - i.centre;
   const double reach = i.half_axes.maxCoeff() + j.half_axes.maxCoeff();
-  if (d.squaredNorm() >= reach * reach ||
-      apart_along_centre_line(i.inverse_shape, d, j.inverse_shape))
-    return {};
+  if (d.squaredNorm() >= reach * reach) {
+    SuperquadricContact c;
+    c.gap = d.norm() - reach;
+    return c;
+  }
+  if (apart_along_centre_line(i.inverse_shape, d, j.inverse_shape)) {
+    SuperquadricContact c;
+    c.gap = centre_line_gap(i.inverse_shape, d, j.inverse_shape);
+    return c;
+  }
+  return solve_ellipsoid_contact(i, j, mu);
+}
+
+SuperquadricContact solve_ellipsoid_contact(const Ellipsoid& i, const Ellipsoid& j,
+                                            std::optional<double> mu) {
+  const Vec3 d = j.centre - i.centre;
   SuperquadricContact c;
   c.near = true;
   if (d.squaredNorm() == 0.0) {
@@ -126,11 +166,14 @@ SuperquadricContact find_ellipsoid_contact(const Ellipsoid& i, const Ellipsoid& 
     return c;
   }
   const double start = mu ? 1.0 / (1.0 + *mu * *mu) : centre_line_start(i, j, d);
-  const Maximum m = maximise(i, j, d, std::clamp(start, 1e-6, 1.0 - 1e-6));
+  const Pencil pencil{d, i.inverse_shape, j.inverse_shape - i.inverse_shape};
+  const Maximum m = maximise(pencil, std::clamp(start, 1e-6, 1.0 - 1e-6));
   c.converged = m.converged;
   c.iterations = m.iterations;
   c.mu = std::sqrt((1.0 - m.t) / m.t);
   c.touching = m.converged && m.f.value < 1.0;
+  if (m.converged && !c.touching)  // sqrt(F) E_i contains E_i grown by (sqrt(F) - 1) a_i
+    c.gap = (std::sqrt(m.f.value) - 1.0) * (i.half_axes.minCoeff() + j.half_axes.minCoeff());
   if (c.touching) {
     c.midway = i.centre + (1.0 - m.t) * (i.inverse_shape * m.f.y);
     c.normal = m.f.y.normalized();

@@ -31,14 +31,23 @@ Mat3 ellipsoid_inverse_shape(const Mat3& rotation, const Vec3& half_axes);
 // 3 x 3 solve: the cheap rejection of the pairs whose bounding spheres overlap.
 bool apart_along_centre_line(const Mat3& inverse_shape_i, const Vec3& d,
                              const Mat3& inverse_shape_j);
+// |d| - sqrt(u^T A_i^-1 u) - sqrt(u^T A_j^-1 u): the gap between the grains' extents along the
+// centre line, a lower bound on their distance when positive.
+double centre_line_gap(const Mat3& inverse_shape_i, const Vec3& d, const Mat3& inverse_shape_j);
 Ellipsoid make_ellipsoid(const Vec3& centre, const Mat3& rotation, const Vec3& half_axes);
 
 // The contact of ellipsoid i with ellipsoid j, the iteration started from the multiplier mu of
 // the last step's midway point when given (t = 1 / (1 + mu^2)), else from the equivalent spheres
 // on the centre line. `near` is false (and nothing else set) when the bounding spheres are apart
-// or the grains' extents along the centre line do not meet (a separating axis); the midway point,
-// normal, overlap and contact point are set for touching grains only (mu, the warm start, always).
+// or the grains' extents along the centre line do not meet (a separating axis), with `gap` that
+// of the bounding spheres or the centre line; the midway point, normal, overlap and contact point
+// are set for touching grains only (mu, the warm start, always).
 SuperquadricContact find_ellipsoid_contact(const Ellipsoid& i, const Ellipsoid& j,
                                            std::optional<double> mu);
+// The same for a pair known to pass both tests (the DEM solver makes them first): Newton alone.
+// `gap` of an apart pair is (sqrt(F) - 1)(a_i + a_j), F > 1 the contact function where the
+// iteration stopped and a the smallest half-axes (docs/dem.md, "Pairs known apart").
+SuperquadricContact solve_ellipsoid_contact(const Ellipsoid& i, const Ellipsoid& j,
+                                            std::optional<double> mu);
 
 }  // namespace partimix::dem

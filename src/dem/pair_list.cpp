@@ -44,6 +44,7 @@ void PairList::build(const CellGrid& grid, std::span<const Vec3> positions,
   index_incoming(positions.size());
   carry_history(new_to_old);
   built_at_.assign(positions.begin(), positions.end());
+  travel_.assign(positions.size(), 0.0);
   block_start_.clear();
 }
 
@@ -85,6 +86,7 @@ void PairList::find_pairs(const CellGrid& grid, std::span<const Vec3> positions,
       history_.resize(start_[n]);
       loads_.resize(start_[n]);
       touching_.resize(start_[n]);
+      clearance_.resize(start_[n]);
     }
     std::copy(found.begin(), found.end(), second_.begin() + start_[begin]);
     for (std::size_t i = begin; i < end; ++i)
@@ -92,6 +94,7 @@ void PairList::find_pairs(const CellGrid& grid, std::span<const Vec3> positions,
                 static_cast<std::uint32_t>(i));
     std::fill(history_.begin() + start_[begin], history_.begin() + start_[end], PairHistory{});
     std::fill(touching_.begin() + start_[begin], touching_.begin() + start_[end], 0);
+    std::fill(clearance_.begin() + start_[begin], clearance_.begin() + start_[end], 0.0);
   }
 }
 
@@ -132,7 +135,7 @@ void PairList::carry_history(std::span<const std::uint32_t> new_to_old) {
     old_to_new_[new_to_old.empty() ? k : new_to_old[k]] = static_cast<std::uint32_t>(k);
 #pragma omp parallel for schedule(static) if (parallel(n))
   for (std::size_t old_pair = 0; old_pair < old_first_.size(); ++old_pair) {
-    if (!old_touching_[old_pair] && !(old_history_[old_pair].mu > 0.0))
+    if (!old_touching_[old_pair])
       continue;
     bool flipped = false;
     const std::int64_t k =
@@ -146,10 +149,8 @@ void PairList::carry_history(std::span<const std::uint32_t> new_to_old) {
 }
 
 void PairList::set_apart(std::size_t k) {
-  if (touching_[k]) {
-    history_[k].spring = Vec3::Zero();
-    history_[k].rolling_spring = Vec3::Zero();
-  }
+  if (touching_[k])
+    history_[k] = PairHistory{};
   touching_[k] = 0;
 }
 
@@ -207,7 +208,7 @@ void PairList::save(StateArchive& archive, const std::string& prefix,
   std::vector<std::int64_t> pairs;
   std::vector<double> springs;
   for (std::size_t k = 0; k < first_.size(); ++k) {
-    if (!touching_[k] && !(history_[k].mu > 0.0))
+    if (!touching_[k])
       continue;
     pairs.insert(pairs.end(), {ids[first_[k]], ids[second_[k]]});
     const PairHistory& h = history_[k];
@@ -263,7 +264,8 @@ std::size_t PairList::bytes() const {
          (history_.capacity() + old_history_.capacity()) * sizeof(PairHistory) +
          loads_.capacity() * sizeof(PairLoad) + touching_.capacity() + old_touching_.capacity() +
          block_start_.capacity() * sizeof(std::uint32_t) + gathered_.capacity() +
-         built_at_.capacity() * sizeof(Vec3);
+         built_at_.capacity() * sizeof(Vec3) +
+         (clearance_.capacity() + travel_.capacity()) * sizeof(double);
 }
 
 }  // namespace partimix::dem

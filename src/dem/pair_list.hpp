@@ -30,7 +30,7 @@ struct PairHistory {
   Vec3 spring = Vec3::Zero();          // xi of grain i [m]
   Vec3 rolling_spring = Vec3::Zero();  // M_r^k on grain i [N m]
   // Superquadrics: the last midway point less grain i's centre, and its multiplier mu, kept
-  // while the pair's bounding spheres overlap; mu = 0: none (the next detection starts cold).
+  // while the grains touch; mu = 0: none (the next detection starts cold).
   Vec3 midway = Vec3::Zero();
   double mu = 0.0;
 };
@@ -46,7 +46,7 @@ struct PairLoad {
 class PairList {
  public:
   // Pairs closer than R_i + R_j + skin; the grid's radius must be at least 2 R_max + skin.
-  explicit PairList(double skin) : skin_(skin) {}
+  explicit PairList(double skin) : skin_(skin), gap_margin_(1e-9 * skin) {}
 
   double skin() const { return skin_; }
 
@@ -64,10 +64,24 @@ class PairList {
   std::uint32_t first(std::size_t k) const { return first_[k]; }
   std::uint32_t second(std::size_t k) const { return second_[k]; }
   PairHistory& history(std::size_t k) { return history_[k]; }
-  // Marks pair k apart: its springs are cleared (a superquadric pair's warm start stays while
-  // the grains are near).
+  // Marks pair k apart: its springs and a superquadric pair's warm start are cleared.
   void set_apart(std::size_t k);
   bool touching(std::size_t k) const { return touching_[k] != 0; }
+
+  // Pairs known apart (docs/dem.md, "Pairs known apart"): travel(i) bounds how far any point of
+  // grain i has moved since the last build; a pair whose grains were `gap` apart stays apart
+  // until their travels since then add up to the gap, and need not be looked at before.
+  void add_travel(std::size_t i, double distance) {
+    if (i < travel_.size())
+      travel_[i] += distance;
+  }
+  // Pair k's surfaces are at least `gap` apart now (gap <= 0: nothing known).
+  void set_gap(std::size_t k, double gap) {
+    clearance_[k] = travel_[first_[k]] + travel_[second_[k]] + gap - gap_margin_;
+  }
+  bool known_apart(std::size_t k) const {
+    return travel_[first_[k]] + travel_[second_[k]] < clearance_[k];
+  }
 
   // Splits the grains into `blocks` runs of consecutive indices with about equal numbers of
   // pairs as first grain (fewer blocks when there are fewer grains), and marks gathered each
@@ -105,8 +119,7 @@ class PairList {
   // Touching pairs of grain i.
   int contacts(std::size_t i) const;
 
-  // The pairs with a history (touching, or near superquadrics with a warm start): the ids of
-  // both grains and their histories, for a checkpoint. restore()
+  // The touching pairs: the ids of both grains and their histories, for a checkpoint. restore()
   // builds the list and gives the saved springs back to the pairs of the same ids; it throws
   // StateError when a saved pair is not one of this list's (the grains are not where the
   // checkpoint had them) or the entries are malformed.
@@ -127,6 +140,8 @@ class PairList {
   void carry_history(std::span<const std::uint32_t> new_to_old);
 
   double skin_;
+  // Taken off every gap: far above the round-off of positions and travels over a list's life.
+  double gap_margin_;
   // Pairs (first_[k], second_[k]), first < second, sorted by first then second; the pairs of
   // grain i as first are [start_[i], start_[i + 1]).
   std::vector<std::uint32_t> first_;
@@ -138,6 +153,8 @@ class PairList {
   std::vector<PairHistory> history_;
   std::vector<PairLoad> loads_;
   std::vector<std::uint8_t> touching_;
+  std::vector<double> clearance_;  // pair k is apart while its grains' travels sum below this
+  std::vector<double> travel_;     // per grain, since the last build
   std::vector<std::uint32_t> block_start_;  // grains; empty: to be partitioned
   std::vector<std::uint8_t> gathered_;
   std::vector<Vec3> built_at_;  // positions at the last build

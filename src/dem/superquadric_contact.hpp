@@ -43,6 +43,9 @@ struct SuperquadricContact {
   double mu = 1.0;             // the multiplier at X (for the warm start)
   int iterations = 0;          // Newton steps, 0 when the bounding tests reject the pair
   bool near = false;           // the bounding tests passed: Newton ran, midway and mu hold
+  // When apart: a lower bound on the distance between the two surfaces, 0 when none is known
+  // (docs/dem.md, "Pairs known apart").
+  double gap = 0.0;
 };
 
 // The contact of grain i with grain j: two ellipsoids by their contact function
