@@ -6,20 +6,23 @@
 # 30 rpm in drums of 240 and 320 mm (15% and 8% fill), 6 s after settling. The mixing cells keep
 # the size of the 200 mm drum's (20 mm), so the larger drums have more of them.
 #
-#     tools/drum_speed_fill_study.sh PARTIMIX OUT_DIR [JOBS]
+#     tools/drum_speed_fill_study.sh PARTIMIX OUT_DIR [JOBS] [SEED]
 #
 # Runs JOBS runs at a time (default 2), one thread each; a run whose folder holds a completed
-# run.json is skipped, so the script resumes. Then summarise with
+# run.json is skipped, so the script resumes. SEED (default 1) is the fill's random seed; other
+# seeds repeat the runs at 30 rpm in the 200 and 320 mm drums only (the run-to-run scatter),
+# into folders named ..._seedSEED. Then summarise with
 # tools/drum_speed_fill_study.py OUT_DIR.
 set -euo pipefail
 
 if [[ $# -lt 2 ]]; then
-  echo "usage: $0 PARTIMIX OUT_DIR [JOBS]" >&2
+  echo "usage: $0 PARTIMIX OUT_DIR [JOBS] [SEED]" >&2
   exit 2
 fi
 partimix=$1
 out=$2
 jobs=${3:-2}
+seed=${4:-1}
 cases=$(cd "$(dirname "$0")/../cases" && pwd)
 length=0.02
 count=4000
@@ -38,6 +41,7 @@ run_keys() {
   echo "--set analyses[0].cells=[${cells},${cells},1]"
   echo "--set analyses[2].start=[0,-${radius},${half}] --set analyses[2].end=[0,0,${half}]"
   echo "--set walls[0].motion.rpm=${rpm} --set time.end=6.0 --set time.output_interval=3.0"
+  echo "--set dem.fill.seed=${seed}"
   if [[ ${shape} != sphere ]]; then
     echo "--set dem.species[0].shape.aspect_ratio=${shape}"
     echo "--set dem.species[1].shape.aspect_ratio=${shape}"
@@ -47,6 +51,7 @@ run_keys() {
 one_run() {
   local shape=$1 rpm=$2 radius=$3
   local name="${shape}_rpm${rpm}_r${radius}"
+  [[ ${seed} != 1 ]] && name="${name}_seed${seed}"
   local case_file="${cases}/drum_seed_ellipsoids.yaml"
   [[ ${shape} == sphere ]] && case_file="${cases}/drum_seed.yaml"
   if grep -qs '"status": "completed"' "${out}/${name}/run.json"; then
@@ -58,11 +63,16 @@ one_run() {
     echo "${name} failed: see ${out}/${name}.log" >&2
 }
 export -f one_run run_keys
-export partimix out cases length count
+export partimix out cases length count seed
 
 mkdir -p "${out}"
 {
   for shape in 1.5 sphere; do
+    if [[ ${seed} != 1 ]]; then
+      echo "${shape} 30 0.1"
+      echo "${shape} 30 0.16"
+      continue
+    fi
     for rpm in 20 30 40 50; do
       echo "${shape} ${rpm} 0.1"
     done
