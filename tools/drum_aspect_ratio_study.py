@@ -54,6 +54,20 @@ def read_run(folder, start):
     }
 
 
+def write_table(rows, path):
+    """The rows' columns (those not starting with _) as CSV at path and as Markdown on stdout."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    columns = [k for k in rows[0] if not k.startswith("_")]
+    with open(path, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=columns, extrasaction="ignore", lineterminator="\n")
+        writer.writeheader()
+        writer.writerows(rows)
+    print("| " + " | ".join(columns) + " |")
+    print("|" + "---|" * len(columns))
+    for r in rows:
+        print("| " + " | ".join(f"{r[c]:.4g}" for c in columns) + " |")
+
+
 def plot(rows, figures, start):
     import matplotlib
 
@@ -107,18 +121,7 @@ def main():
         print(f"drum_aspect_ratio_study: {error}", file=sys.stderr)
         return EXIT_BAD_INPUT
     out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
-    columns = [k for k in rows[0] if not k.startswith("_")]
-    with open(out / "aspect_ratio_study.csv", "w", newline="") as f:
-        writer = csv.DictWriter(
-            f, fieldnames=columns, extrasaction="ignore", lineterminator="\n"
-        )
-        writer.writeheader()
-        writer.writerows(rows)
-    print("| " + " | ".join(columns) + " |")
-    print("|" + "---|" * len(columns))
-    for r in rows:
-        print("| " + " | ".join(f"{r[c]:.4g}" for c in columns) + " |")
+    write_table(rows, out / "aspect_ratio_study.csv")
     plot(rows, Path(args.figures) if args.figures else out, args.start)
     return 0
 

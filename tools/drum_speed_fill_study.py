@@ -18,13 +18,12 @@ Exit codes: 0 success, 2 bad input (a folder without run.json or series.csv, or 
 """
 
 import argparse
-import csv
 import json
 import math
 import sys
 from pathlib import Path
 
-from drum_aspect_ratio_study import read_run
+from drum_aspect_ratio_study import read_run, write_table
 
 EXIT_BAD_INPUT = 2
 
@@ -94,16 +93,7 @@ def main():
         print(f"drum_speed_fill_study: {error}", file=sys.stderr)
         return EXIT_BAD_INPUT
     out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
-    columns = [k for k in rows[0] if not k.startswith("_")]
-    with open(out / "speed_fill_study.csv", "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=columns, extrasaction="ignore", lineterminator="\n")
-        writer.writeheader()
-        writer.writerows(rows)
-    print("| " + " | ".join(columns) + " |")
-    print("|" + "---|" * len(columns))
-    for r in rows:
-        print("| " + " | ".join(f"{r[c]:.4g}" for c in columns) + " |")
+    write_table(rows, out / "speed_fill_study.csv")
     plot(rows, Path(args.figures) if args.figures else out, args.rpm)
     return 0
 
