@@ -6,6 +6,7 @@
 namespace partimix {
 
 using Vec3 = Eigen::Vector3d;
+using Vec3f = Eigen::Vector3f;
 using Mat3 = Eigen::Matrix3d;
 
 }  // namespace partimix

@@ -324,17 +324,17 @@ int DemSolver::block_loads(int b, double dt) {
   return failures;
 }
 
-// The history and grain j's frame of a pair a few ahead, unless it is known apart: the loop is
+// The history and grain j's form of a pair a few ahead, unless it is known apart: the loop is
 // bound by the wait for them (measured: 11% faster on the ellipsoid drum of bench/).
 void DemSolver::prefetch_pair(std::size_t k) const {
   if (pairs_->known_apart(k))
     return;
   const auto* history = reinterpret_cast<const char*>(&pairs_->history(k));
-  const auto* frame = reinterpret_cast<const char*>(&frames_[pairs_->second(k)]);
+  const auto* form = reinterpret_cast<const char*>(&forms_[pairs_->second(k)]);
   for (std::size_t line = 0; line < sizeof(PairHistory); line += 64)
     __builtin_prefetch(history + line);
-  for (std::size_t line = 0; line < sizeof(GrainFrame); line += 64)
-    __builtin_prefetch(frame + line);
+  for (std::size_t line = 0; line < sizeof(EllipsoidForm); line += 64)
+    __builtin_prefetch(form + line);
 }
 
 int DemSolver::pair_loads(std::size_t k, double dt) {

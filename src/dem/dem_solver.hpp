@@ -120,6 +120,8 @@ class DemSolver final : public Solver {
   void prefetch_pair(std::size_t k) const;
   int pair_loads(std::size_t k, double dt);
   int shaped_pair_loads(std::size_t k, const Vec3& rij, double dt);
+  SuperquadricContact ellipsoid_contact(std::size_t i, std::size_t j, const Vec3& centre_j,
+                                        const PairHistory& history) const;
   SuperquadricContact shaped_contact(std::size_t i, std::size_t j, const Vec3& centre_j,
                                      const PairHistory& history) const;
   bool wall_loads(std::size_t i, double dt, int& failures);
@@ -137,7 +139,7 @@ class DemSolver final : public Solver {
   // contact function (dem/ellipsoid_contact.hpp); the superquadrics' omega from L with it.
   void update_frames();
   bool ellipsoidal(std::size_t i) const;  // a sphere or an ellipsoid
-  Ellipsoid ellipsoid(std::size_t i, const Vec3& centre) const;
+  double smallest_half_axis(std::size_t i) const;
   // The grain's radius, or its shape's volume-equivalent radius (the rolling inertia's).
   double equivalent_radius(std::size_t i) const;
   // Grain i's radius in the Hertz law at its surface point centre + arm (world frame): its
@@ -174,11 +176,11 @@ class DemSolver final : public Solver {
   std::vector<Vec3>* half_axes_ = nullptr;          // body frame; runs with superquadrics only
   std::vector<double>* volume_ = nullptr;           // runs with superquadrics only
   std::unique_ptr<GrainGlyphs> glyphs_;             // runs with superquadrics only
-  struct GrainFrame {
-    Mat3 rotation;
-    Mat3 inverse_shape;
-  };
-  std::vector<GrainFrame> frames_;  // runs with superquadrics only
+  // Runs with superquadrics only: each grain's rotation, and the form of each sphere and
+  // ellipsoid (dem/ellipsoid_contact.hpp), apart so that a pair of ellipsoids reads 96 bytes
+  // of each grain (update_frames).
+  std::vector<Mat3> rotations_;
+  std::vector<EllipsoidForm> forms_;
   std::int64_t contact_failures_ =
       0;  // contact detections that missed their tolerance, in all steps
   std::unique_ptr<CellGrid> grid_;

@@ -14,15 +14,15 @@
 namespace partimix::dem {
 
 void DemSolver::update_frames() {
-  frames_.resize(store_.size());
+  rotations_.resize(store_.size());
+  forms_.resize(store_.size());
 #pragma omp parallel for schedule(static) if (parallel(store_.size()))
   for (std::size_t i = 0; i < store_.size(); ++i) {
-    frames_[i].rotation = orientation(i).toRotationMatrix();
+    rotations_[i] = orientation(i).toRotationMatrix();
     if (const auto& rotor = rotors_[(*species_)[i]])
-      (*angular_velocity_)[i] =
-          rotor->angular_velocity(frames_[i].rotation, (*angular_momentum_)[i]);
+      (*angular_velocity_)[i] = rotor->angular_velocity(rotations_[i], (*angular_momentum_)[i]);
     if (ellipsoidal(i))
-      frames_[i].inverse_shape = ellipsoid_inverse_shape(frames_[i].rotation, (*half_axes_)[i]);
+      forms_[i] = ellipsoid_form(rotations_[i], (*half_axes_)[i]);
   }
 }
 
@@ -31,28 +31,36 @@ bool DemSolver::ellipsoidal(std::size_t i) const {
   return shape == nullptr || shape->is_ellipsoid();
 }
 
+double DemSolver::smallest_half_axis(std::size_t i) const {
+  const Superquadric* shape = shapes_[(*species_)[i]];
+  return shape ? shape->half_axes().minCoeff() : (*radius_)[i];
+}
+
 double DemSolver::contact_radius(std::size_t i, const Vec3& arm) const {
   const Superquadric* shape = shapes_[(*species_)[i]];
   if (shape == nullptr)
     return (*radius_)[i];
-  return dem::hertz_radius(*shape, frames_[i].rotation.transpose() * arm, config_.hertz_radius,
+  if (config_.hertz_radius == HertzRadius::equivalent)  // the default: no need to turn the arm
+    return shape->equivalent_radius();
+  return dem::hertz_radius(*shape, rotations_[i].transpose() * arm, config_.hertz_radius,
                            config_.curvature_limit);
 }
 
-Ellipsoid DemSolver::ellipsoid(std::size_t i, const Vec3& centre) const {
-  return {centre, frames_[i].rotation, (*half_axes_)[i], frames_[i].inverse_shape};
+// Two ellipsoids (or spheres) by their contact function (the bounding tests made by the caller),
+// warm-started from the pair's history.
+SuperquadricContact DemSolver::ellipsoid_contact(std::size_t i, std::size_t j, const Vec3& centre_j,
+                                                 const PairHistory& history) const {
+  return solve_ellipsoid_contact(
+      {store_.position()[i], forms_[i], smallest_half_axis(i)},
+      {centre_j, forms_[j], smallest_half_axis(j)},
+      history.mu > 0.0F ? std::optional<double>(history.mu) : std::nullopt);
 }
 
-// Two ellipsoids (or spheres) by their contact function (the bounding tests made by the caller),
-// other pairs by the general midway point (dem/superquadric_contact.hpp), each warm-started from
-// the pair's history.
+// Other pairs by the general midway point (dem/superquadric_contact.hpp), warm-started from the
+// pair's history.
 SuperquadricContact DemSolver::shaped_contact(std::size_t i, std::size_t j, const Vec3& centre_j,
                                               const PairHistory& history) const {
   const Vec3& centre_i = store_.position()[i];
-  if (ellipsoidal(i) && ellipsoidal(j)) {
-    return solve_ellipsoid_contact(ellipsoid(i, centre_i), ellipsoid(j, centre_j),
-                                   history.mu > 0.0 ? std::optional(history.mu) : std::nullopt);
-  }
   // A sphere meeting a blocky grain is the superquadric of its radius (made here: rare).
   std::optional<Superquadric> sphere_i;
   std::optional<Superquadric> sphere_j;
@@ -62,10 +70,10 @@ SuperquadricContact DemSolver::shaped_contact(std::size_t i, std::size_t j, cons
     return sphere.emplace(Vec3::Constant((*radius_)[g]), 2.0, 2.0);
   };
   std::optional<MidwayStart> start;
-  if (history.mu > 0.0)
-    start = MidwayStart{centre_i + history.midway, history.mu};
-  return find_midway_contact({&shape_of(i, sphere_i), centre_i, frames_[i].rotation},
-                             {&shape_of(j, sphere_j), centre_j, frames_[j].rotation}, start);
+  if (history.mu > 0.0F)
+    start = MidwayStart{centre_i + history.midway.cast<double>(), history.mu};
+  return find_midway_contact({&shape_of(i, sphere_i), centre_i, rotations_[i]},
+                             {&shape_of(j, sphere_j), centre_j, rotations_[j]}, start);
 }
 
 int DemSolver::shaped_pair_loads(std::size_t k, const Vec3& rij, double dt) {
@@ -77,13 +85,15 @@ int DemSolver::shaped_pair_loads(std::size_t k, const Vec3& rij, double dt) {
   const std::size_t j = pairs_->second(k);
   const Vec3 centre_j = x[i] - rij;  // the image of j nearest to i
   PairHistory& history = pairs_->history(k);
-  if (ellipsoidal(i) && ellipsoidal(j) &&
-      apart_along_centre_line(frames_[i].inverse_shape, rij, frames_[j].inverse_shape)) {
+  const bool ellipsoids = ellipsoidal(i) && ellipsoidal(j);
+  if (ellipsoids &&
+      apart_along_centre_line(forms_[i].inverse_shape, rij, forms_[j].inverse_shape)) {
     pairs_->set_apart(k);
-    pairs_->set_gap(k, centre_line_gap(frames_[i].inverse_shape, rij, frames_[j].inverse_shape));
+    pairs_->set_gap(k, centre_line_gap(forms_[i].inverse_shape, rij, forms_[j].inverse_shape));
     return 0;
   }
-  const SuperquadricContact found = shaped_contact(i, j, centre_j, history);
+  const SuperquadricContact found = ellipsoids ? ellipsoid_contact(i, j, centre_j, history)
+                                               : shaped_contact(i, j, centre_j, history);
   const int failures = found.converged ? 0 : 1;
   if (!found.touching) {
     pairs_->set_apart(k);
@@ -92,8 +102,9 @@ int DemSolver::shaped_pair_loads(std::size_t k, const Vec3& rij, double dt) {
   }
   // The warm start of the next step, kept while the grains touch: an apart pair keeps none, so
   // skipping it while it is known apart changes nothing (docs/dem.md, "Pairs known apart").
-  history.midway = found.converged ? Vec3(found.midway - x[i]) : Vec3::Zero();
-  history.mu = found.converged ? found.mu : 0.0;
+  // Single precision is plenty for a starting point, and keeps the history to one cache line.
+  history.midway = found.converged ? Vec3f((found.midway - x[i]).cast<float>()) : Vec3f::Zero();
+  history.mu = found.converged ? static_cast<float>(found.mu) : 0.0F;
   Contact c;
   c.normal = -found.normal;
   c.overlap = found.overlap;
@@ -124,7 +135,7 @@ int DemSolver::shaped_wall_contacts(std::size_t i, std::size_t w, WallTouches& o
   const Vec3& x = store_.position()[i];
   const geometry::RigidPose& pose = walls_[w].pose;
   const Vec3 local = pose.rotation.transpose() * (x - pose.origin) + pose.start_origin;
-  const Mat3 body_to_local = pose.rotation.transpose() * frames_[i].rotation;
+  const Mat3 body_to_local = pose.rotation.transpose() * rotations_[i];
   std::array<WallContact, geometry::kMaxSurfaceContacts> found;
   const int count = superquadric_wall_contacts(
       *shapes_[(*species_)[i]], local, body_to_local, *walls_[w].surface,

@@ -19,29 +19,15 @@ struct ContactFunction {
   Vec3 dy_dt;
 };
 
-// The inverse of a symmetric 3 x 3 matrix by its cofactors (6 of the 9 distinct).
-Mat3 symmetric_inverse(const Mat3& m) {
-  const double c00 = m(1, 1) * m(2, 2) - m(1, 2) * m(1, 2);
-  const double c01 = m(0, 2) * m(1, 2) - m(0, 1) * m(2, 2);
-  const double c02 = m(0, 1) * m(1, 2) - m(0, 2) * m(1, 1);
-  const double c11 = m(0, 0) * m(2, 2) - m(0, 2) * m(0, 2);
-  const double c12 = m(0, 1) * m(0, 2) - m(0, 0) * m(1, 2);
-  const double c22 = m(0, 0) * m(1, 1) - m(0, 1) * m(0, 1);
-  const double r = 1.0 / (m(0, 0) * c00 + m(0, 1) * c01 + m(0, 2) * c02);
-  Mat3 inverse;
-  inverse << r * c00, r * c01, r * c02, r * c01, r * c11, r * c12, r * c02, r * c12, r * c22;
-  return inverse;
-}
-
 // The pair's data for the contact function: d and the two inverse shapes, B_i and B_j - B_i.
 struct Pencil {
   Vec3 d;
-  const Mat3& inverse_shape_i;
-  Mat3 difference;
+  const SymMat3& inverse_shape_i;
+  SymMat3 difference;
 };
 
 ContactFunction contact_function(const Pencil& p, double t) {
-  const Mat3 c_inverse = symmetric_inverse(p.inverse_shape_i + t * p.difference);
+  const SymMat3 c_inverse = p.inverse_shape_i.plus_scaled(t, p.difference).inverse();
   const double u = t * (1.0 - t);
   ContactFunction f{0.0, 0.0, 0.0, c_inverse * p.d, Vec3::Zero()};
   const double s = p.d.dot(f.y);
@@ -58,9 +44,9 @@ ContactFunction contact_function(const Pencil& p, double t) {
 
 // The cold start: the equivalent spheres along the centre line, t0 = r_i / (r_i + r_j) with
 // r = |d| / N(d) each grain's radius towards the other.
-double centre_line_start(const Ellipsoid& i, const Ellipsoid& j, const Vec3& d) {
-  const double inverse_radius_i = std::sqrt(i.quadratic_form(d));
-  const double inverse_radius_j = std::sqrt(j.quadratic_form(d));
+double centre_line_start(const EllipsoidView& i, const EllipsoidView& j, const Vec3& d) {
+  const double inverse_radius_i = std::sqrt(i.form.shape.quadratic(d));
+  const double inverse_radius_j = std::sqrt(j.form.shape.quadratic(d));
   return inverse_radius_j / (inverse_radius_i + inverse_radius_j);
 }
 
@@ -97,14 +83,16 @@ Maximum maximise(const Pencil& p, double t) {
 
 // The surface points x* + alpha n of i and x* + beta n of j, from their quadratics in the forms
 // without cancellation (docs/dem.md).
-void add_surface_points(const Ellipsoid& i, const Ellipsoid& j, const Maximum& m,
+void add_surface_points(const EllipsoidView& i, const EllipsoidView& j, const Maximum& m,
                         SuperquadricContact& c) {
   const double depth = 1.0 - m.f.value;
   const double y = m.f.y.norm();
   const double b_i = (1.0 - m.t) * y;
   const double b_j = m.t * y;
-  const double alpha = depth / (b_i + std::sqrt(b_i * b_i + i.quadratic_form(c.normal) * depth));
-  const double beta = -depth / (b_j + std::sqrt(b_j * b_j + j.quadratic_form(c.normal) * depth));
+  const double alpha =
+      depth / (b_i + std::sqrt(b_i * b_i + i.form.shape.quadratic(c.normal) * depth));
+  const double beta =
+      -depth / (b_j + std::sqrt(b_j * b_j + j.form.shape.quadratic(c.normal) * depth));
   c.overlap = alpha - beta;
   c.point = c.midway + 0.5 * (alpha + beta) * c.normal;
 }
@@ -112,31 +100,31 @@ void add_surface_points(const Ellipsoid& i, const Ellipsoid& j, const Maximum& m
 }  // namespace
 
 // With q = d^T A^-1 d, |d|^2 > sqrt(q_i) + sqrt(q_j) squared twice: no square root.
-bool apart_along_centre_line(const Mat3& inverse_shape_i, const Vec3& d,
-                             const Mat3& inverse_shape_j) {
-  const double q_i = d.dot(inverse_shape_i * d);
-  const double q_j = d.dot(inverse_shape_j * d);
+bool apart_along_centre_line(const SymMat3& inverse_shape_i, const Vec3& d,
+                             const SymMat3& inverse_shape_j) {
+  const double q_i = inverse_shape_i.quadratic(d);
+  const double q_j = inverse_shape_j.quadratic(d);
   const double d2 = d.squaredNorm();
   const double excess = d2 * d2 - q_i - q_j;
   return excess > 0.0 && excess * excess > 4.0 * q_i * q_j;
 }
 
-double centre_line_gap(const Mat3& inverse_shape_i, const Vec3& d, const Mat3& inverse_shape_j) {
+double centre_line_gap(const SymMat3& inverse_shape_i, const Vec3& d,
+                       const SymMat3& inverse_shape_j) {
   const double distance = d.norm();
   return distance -
-         (std::sqrt(d.dot(inverse_shape_i * d)) + std::sqrt(d.dot(inverse_shape_j * d))) / distance;
+         (std::sqrt(inverse_shape_i.quadratic(d)) + std::sqrt(inverse_shape_j.quadratic(d))) /
+             distance;
 }
 
-Mat3 ellipsoid_inverse_shape(const Mat3& rotation, const Vec3& half_axes) {
-  return rotation * half_axes.cwiseAbs2().asDiagonal() * rotation.transpose();
+EllipsoidForm ellipsoid_form(const Mat3& rotation, const Vec3& half_axes) {
+  const Vec3 squares = half_axes.cwiseAbs2();
+  return {SymMat3::rotated_diagonal(rotation, squares),
+          SymMat3::rotated_diagonal(rotation, squares.cwiseInverse())};
 }
 
 Ellipsoid make_ellipsoid(const Vec3& centre, const Mat3& rotation, const Vec3& half_axes) {
-  return {centre, rotation, half_axes, ellipsoid_inverse_shape(rotation, half_axes)};
-}
-
-double Ellipsoid::quadratic_form(const Vec3& x) const {
-  return (rotation.transpose() * x).cwiseQuotient(half_axes).squaredNorm();
+  return {centre, ellipsoid_form(rotation, half_axes), half_axes};
 }
 
 SuperquadricContact find_ellipsoid_contact(const Ellipsoid& i, const Ellipsoid& j,
@@ -148,15 +136,16 @@ SuperquadricContact find_ellipsoid_contact(const Ellipsoid& i, const Ellipsoid& 
     c.gap = d.norm() - reach;
     return c;
   }
-  if (apart_along_centre_line(i.inverse_shape, d, j.inverse_shape)) {
+  if (apart_along_centre_line(i.form.inverse_shape, d, j.form.inverse_shape)) {
     SuperquadricContact c;
-    c.gap = centre_line_gap(i.inverse_shape, d, j.inverse_shape);
+    c.gap = centre_line_gap(i.form.inverse_shape, d, j.form.inverse_shape);
     return c;
   }
-  return solve_ellipsoid_contact(i, j, mu);
+  return solve_ellipsoid_contact({i.centre, i.form, i.half_axes.minCoeff()},
+                                 {j.centre, j.form, j.half_axes.minCoeff()}, mu);
 }
 
-SuperquadricContact solve_ellipsoid_contact(const Ellipsoid& i, const Ellipsoid& j,
+SuperquadricContact solve_ellipsoid_contact(const EllipsoidView& i, const EllipsoidView& j,
                                             std::optional<double> mu) {
   const Vec3 d = j.centre - i.centre;
   SuperquadricContact c;
@@ -166,16 +155,16 @@ SuperquadricContact solve_ellipsoid_contact(const Ellipsoid& i, const Ellipsoid&
     return c;
   }
   const double start = mu ? 1.0 / (1.0 + *mu * *mu) : centre_line_start(i, j, d);
-  const Pencil pencil{d, i.inverse_shape, j.inverse_shape - i.inverse_shape};
+  const Pencil pencil{d, i.form.inverse_shape, j.form.inverse_shape - i.form.inverse_shape};
   const Maximum m = maximise(pencil, std::clamp(start, 1e-6, 1.0 - 1e-6));
   c.converged = m.converged;
   c.iterations = m.iterations;
   c.mu = std::sqrt((1.0 - m.t) / m.t);
   c.touching = m.converged && m.f.value < 1.0;
   if (m.converged && !c.touching)  // sqrt(F) E_i contains E_i grown by (sqrt(F) - 1) a_i
-    c.gap = (std::sqrt(m.f.value) - 1.0) * (i.half_axes.minCoeff() + j.half_axes.minCoeff());
+    c.gap = (std::sqrt(m.f.value) - 1.0) * (i.smallest_half_axis + j.smallest_half_axis);
   if (c.touching) {
-    c.midway = i.centre + (1.0 - m.t) * (i.inverse_shape * m.f.y);
+    c.midway = i.centre + (1.0 - m.t) * (i.form.inverse_shape * m.f.y);
     c.normal = m.f.y.normalized();
     add_surface_points(i, j, m, c);
   }

@@ -17,7 +17,7 @@ constexpr std::size_t kColumns = 10;  // a checkpoint's history of one pair: Pai
 // The history as grain j sees it: the springs with the sign changed; the midway point, kept
 // from grain i's centre, is dropped (the next detection starts cold).
 PairHistory seen_from_j(const PairHistory& h) {
-  return {-h.spring, -h.rolling_spring, Vec3::Zero(), 0.0};
+  return {-h.spring, -h.rolling_spring, Vec3f::Zero(), 0.0F};
 }
 
 }  // namespace
@@ -246,8 +246,8 @@ void PairList::restore(const StateArchive& archive, const std::string& prefix, c
                       prefix, pairs[2 * p], pairs[2 * p + 1]));
     }
     const double* s = &springs[kColumns * p];
-    const PairHistory saved{Vec3(s[0], s[1], s[2]), Vec3(s[3], s[4], s[5]), Vec3(s[6], s[7], s[8]),
-                            s[9]};
+    const PairHistory saved{Vec3(s[0], s[1], s[2]), Vec3(s[3], s[4], s[5]),
+                            Vec3(s[6], s[7], s[8]).cast<float>(), static_cast<float>(s[9])};
     history_[k] = flipped ? seen_from_j(saved) : saved;
     touching_[k] = 1;
   }

@@ -26,17 +26,17 @@ constexpr bool parallel(std::size_t grains) {
   return grains >= 256;
 }
 
-struct PairHistory {
+struct alignas(64) PairHistory {
   Vec3 spring = Vec3::Zero();          // xi of grain i [m]
   Vec3 rolling_spring = Vec3::Zero();  // M_r^k on grain i [N m]
   // Superquadrics: the last midway point less grain i's centre, and its multiplier mu, kept
-  // while the grains touch; mu = 0: none (the next detection starts cold).
-  Vec3 midway = Vec3::Zero();
-  double mu = 0.0;
+  // while the grains touch; mu = 0: none (the next detection starts cold). A starting point for
+  // Newton needs no more than single precision, and so the history fills one cache line.
+  Vec3f midway = Vec3f::Zero();
+  float mu = 0.0F;
 };
+static_assert(sizeof(PairHistory) == 64);
 
-// What a pair's contact does to its grains: the force on i (j gets its opposite) and the torque
-// on each.
 struct PairLoad {
   Vec3 force = Vec3::Zero();
   Vec3 torque_i = Vec3::Zero();

@@ -92,13 +92,19 @@ double RigidRotor::kinetic_energy(const Quaternion& q, const Vec3& momentum) con
 }
 
 // docs/dem.md, Rotation: half step about the smallest moment's axis, full step about the
-// largest's, the sphere of the intermediate moment (which commutes with both), half step.
+// largest's, the sphere of the intermediate moment (which commutes with both), half step. A
+// symmetric top has full_rate_ = 0 (prolate) or half_rate_ = 0 (oblate): its two flows left
+// commute, so one full step of each is the same exact flow with a turn less.
 void RigidRotor::drift(Quaternion& q, const Vec3& momentum, double dt) const {
   Vec3 body = q.conjugate() * momentum;
-  turn_about_axis(q, body, half_axis_, half_rate_, 0.5 * dt);
-  turn_about_axis(q, body, full_axis_, full_rate_, dt);
+  if (full_rate_ == 0.0) {
+    turn_about_axis(q, body, half_axis_, half_rate_, dt);
+  } else {
+    turn_about_axis(q, body, half_axis_, half_rate_, 0.5 * dt);
+    turn_about_axis(q, body, full_axis_, full_rate_, dt);
+    turn_about_axis(q, body, half_axis_, half_rate_, 0.5 * dt);
+  }
   turn_as_sphere(q, momentum, reference_, dt);
-  turn_about_axis(q, body, half_axis_, half_rate_, 0.5 * dt);
   q.normalize();
 }
 

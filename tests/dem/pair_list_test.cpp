@@ -104,16 +104,16 @@ TEST(PairList, SpringsFollowTheirGrainsThroughAReSortAndFlipWithThePair) {
   const std::uint32_t b = list.second(5);
   list.history(5).spring = Vec3(1, 2, 3);
   list.history(5).rolling_spring = Vec3(4, 5, 6);
-  list.history(5).midway = Vec3(1e-4, 0, 0);
-  list.history(5).mu = 0.9;
+  list.history(5).midway = Vec3f(1e-4F, 0, 0);
+  list.history(5).mu = 0.9F;
   list.partition(1);
   std::vector<Vec3> force(bed.x.size(), Vec3::Zero());
   std::vector<Vec3> torque(bed.x.size(), Vec3::Zero());
   list.deliver(5, PairLoad{}, force, torque);
   // Rebuilt in place: the whole history stays, the midway point included.
   list.build(listed_bed.grid, bed.x, bed.radius);
-  EXPECT_EQ(list.history(5).midway, Vec3(1e-4, 0, 0));
-  EXPECT_EQ(list.history(5).mu, 0.9);
+  EXPECT_EQ(list.history(5).midway, Vec3f(1e-4F, 0, 0));
+  EXPECT_EQ(list.history(5).mu, 0.9F);
   list.history(6).spring = Vec3(7, 8, 9);  // not touching: not carried
   // Reverse the grains: new grain k is old grain n - 1 - k, so every pair's order flips.
   const std::size_t n = bed.x.size();
@@ -132,7 +132,7 @@ TEST(PairList, SpringsFollowTheirGrainsThroughAReSortAndFlipWithThePair) {
     if (list.first(k) == n - 1 - b && list.second(k) == n - 1 - a) {
       EXPECT_EQ(list.history(k).spring, Vec3(-1, -2, -3));
       EXPECT_EQ(list.history(k).rolling_spring, Vec3(-4, -5, -6));
-      EXPECT_EQ(list.history(k).mu, 0.0);  // kept from the other grain's centre: dropped
+      EXPECT_EQ(list.history(k).mu, 0.0F);  // kept from the other grain's centre: dropped
       EXPECT_TRUE(list.touching(k));
       ++carried;
     } else {

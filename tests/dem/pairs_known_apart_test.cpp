@@ -23,6 +23,7 @@
 #include "dem/dem_setups.hpp"
 #include "dem/dem_solver.hpp"
 #include "dem/ellipsoid_contact.hpp"
+#include "dem/random_orientation.hpp"
 #include "superquadric_random_pairs.hpp"
 
 namespace partimix::dem {
@@ -54,7 +55,7 @@ TEST(PairsKnownApart, ATurnMovesNoPointFartherThanTwiceTheRadiusTimesTheQuaterni
   std::mt19937 random(5);
   std::normal_distribution<double> gauss;
   for (int n = 0; n < 10000; ++n) {
-    const Eigen::Quaterniond q = Eigen::Quaterniond::UnitRandom();
+    const Eigen::Quaterniond q = testing::random_orientation(random);
     const double angle = 0.3 * std::abs(gauss(random));
     const Vec3 axis = Vec3(gauss(random), gauss(random), gauss(random)).normalized();
     const Eigen::Quaterniond turned = Eigen::Quaterniond(Eigen::AngleAxisd(angle, axis)) * q;

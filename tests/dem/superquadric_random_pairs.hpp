@@ -9,6 +9,7 @@
 #include <memory>
 #include <random>
 
+#include "dem/random_orientation.hpp"
 #include "dem/superquadric.hpp"
 #include "dem/superquadric_contact.hpp"
 #include "superquadric_reference.hpp"
@@ -68,12 +69,7 @@ class PairMaker {
     return Vec3(gauss(random_), gauss(random_), gauss(random_)).normalized();
   }
 
-  Mat3 rotation() {
-    std::normal_distribution<> gauss;
-    return Eigen::Quaterniond(gauss(random_), gauss(random_), gauss(random_), gauss(random_))
-        .normalized()
-        .toRotationMatrix();
-  }
+  Mat3 rotation() { return testing::random_orientation(random_).toRotationMatrix(); }
 
   std::mt19937 random_;
   double ellipsoids_;

@@ -30,6 +30,7 @@
 
 #include "dem/dem_setups.hpp"
 #include "dem/dem_solver.hpp"
+#include "dem/random_orientation.hpp"
 #include "geometry/box_container_surface.hpp"
 #include "geometry/grid_meshes.hpp"
 #include "geometry/mesh_shell_surface.hpp"
@@ -125,7 +126,7 @@ TEST(SuperquadricSolver, ElasticFrictionlessEllipsoidsInABoxKeepTheirEnergy) {
     grains.species.push_back(0);
     grains.velocity.push_back(Vec3(unit(random), unit(random), unit(random)));
     grains.angular_velocity.push_back(100.0 * Vec3(unit(random), unit(random), unit(random)));
-    grains.orientation.push_back(Eigen::Quaterniond::UnitRandom());
+    grains.orientation.push_back(testing::random_orientation(random));
   }
   ParticleStore store;
   DemSolver solver(store, box(1.1 * half), config, Vec3::Zero(), grains);
@@ -161,7 +162,9 @@ TEST(SuperquadricSolver, ElasticFrictionlessEllipsoidsInABoxKeepTheirEnergy) {
 
 // Ellipsoids dropped into a closed box container and into a closed mesh cube, elastic and
 // frictionless, under gravity: every contact with each face of the walls acts, so none leaves
-// the box, and the energy does not grow (docs/dem.md, "Walls and superquadrics").
+// the box, and the energy does not grow beyond the 1% that the grains' own contacts, not exactly
+// conservative, allow (as in the closed box above; docs/dem.md, "Walls and superquadrics").
+// Eight random starts: the worst gain of one start ranges from 0 to 0.6%.
 struct Dropped {
   double worst_gain = 0.0;  // the largest (E - E_0) / E_0, E sampled whenever nothing touches
   int samples = 0;
@@ -169,13 +172,13 @@ struct Dropped {
   double failures = 0.0;
 };
 
-Dropped drop_ellipsoids(std::shared_ptr<const geometry::Surface> wall, double half) {
+Dropped drop_ellipsoids(std::shared_ptr<const geometry::Surface> wall, double half, unsigned seed) {
   const Superquadric ellipsoid(Vec3(1.0e-3, 1.0e-3, 2.0e-3), 2.0, 2.0);
   Config config = elastic_frictionless(ellipsoid, 1.0e7);
   config.walls.push_back({std::move(wall), {}, {2.0e11, 0.3}, {}});
   const Vec3 gravity(0.0, 0.0, -9.81);
   Grains grains;
-  std::mt19937 random(11);
+  std::mt19937 random(seed);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   for (int k = 0; k < 12; ++k) {
     grains.position.push_back(Vec3(k % 3 - 1, k / 3 % 2 - 0.5, k / 6 + 0.2) * 0.005);
@@ -183,7 +186,7 @@ Dropped drop_ellipsoids(std::shared_ptr<const geometry::Surface> wall, double ha
     grains.species.push_back(0);
     grains.velocity.push_back(0.3 * Vec3(unit(random), unit(random), unit(random)));
     grains.angular_velocity.push_back(50.0 * Vec3(unit(random), unit(random), unit(random)));
-    grains.orientation.push_back(Eigen::Quaterniond::UnitRandom());
+    grains.orientation.push_back(testing::random_orientation(random));
   }
   ParticleStore store;
   DemSolver solver(store, box(2.0 * half), config, gravity, grains);
@@ -224,15 +227,16 @@ TEST(SuperquadricSolver, EllipsoidsStayInABoxContainerAndAMeshBoxWithoutGainingE
   for (const auto& [name, wall] :
        {std::pair<std::string, std::shared_ptr<const geometry::Surface>>{"container", container},
         {"mesh", mesh}}) {
-    const Dropped dropped = drop_ellipsoids(wall, half);
-    RecordProperty(name + "_worst_energy_gain", fmt::format("{:.3e}", dropped.worst_gain));
-    RecordProperty(name + "_samples", dropped.samples);
-    RecordProperty(name + "_worst_outside", fmt::format("{:.3e}", dropped.worst_outside));
-    RecordProperty(name + "_failures", fmt::format("{}", dropped.failures));
-    EXPECT_GT(dropped.samples, 50) << name;
-    EXPECT_LT(dropped.worst_gain, 2e-3) << name;
-    EXPECT_LT(dropped.worst_outside, -0.5e-3) << name;  // half the smallest half-axis inside
-    EXPECT_EQ(dropped.failures, 0.0) << name;
+    double worst_gain = 0.0;
+    for (unsigned seed = 1; seed <= 8; ++seed) {
+      const Dropped dropped = drop_ellipsoids(wall, half, seed);
+      worst_gain = std::max(worst_gain, dropped.worst_gain);
+      EXPECT_GT(dropped.samples, 50) << name << ", start " << seed;
+      EXPECT_LT(dropped.worst_gain, 1e-2) << name << ", start " << seed;
+      EXPECT_LT(dropped.worst_outside, -0.5e-3) << name;  // half the smallest half-axis inside
+      EXPECT_EQ(dropped.failures, 0.0) << name << ", start " << seed;
+    }
+    RecordProperty(name + "_worst_energy_gain", fmt::format("{:.3e}", worst_gain));
   }
 }
 
