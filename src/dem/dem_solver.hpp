@@ -117,6 +117,8 @@ class DemSolver final : public Solver {
   // The pair loads of block b of the pair list, and of pair k; the number of contact detections
   // that missed their tolerance (superquadrics, dem_solver_superquadrics.cpp).
   int block_loads(int b, double dt);
+  int live_pair_loads(std::vector<std::uint32_t>& live, std::size_t first, std::size_t last,
+                      double dt);
   void prefetch_pair(std::size_t k) const;
   int pair_loads(std::size_t k, double dt);
   int shaped_pair_loads(std::size_t k, const Vec3& rij, double dt);
@@ -171,11 +173,12 @@ class DemSolver final : public Solver {
   // Runs with superquadrics skip the pairs known apart (docs/dem.md, "Pairs known apart"); for
   // spheres alone the bookkeeping costs more than it saves (measured 7% slower on bench/'s drum).
   bool pairs_known_apart_ = false;
-  static constexpr std::size_t kPrefetchAhead = 8;  // pairs
-  std::vector<Vec3>* angular_momentum_ = nullptr;   // world frame; runs with superquadrics only
-  std::vector<Vec3>* half_axes_ = nullptr;          // body frame; runs with superquadrics only
-  std::vector<double>* volume_ = nullptr;           // runs with superquadrics only
-  std::unique_ptr<GrainGlyphs> glyphs_;             // runs with superquadrics only
+  static constexpr std::size_t kPrefetchAhead = 8;      // pairs
+  std::vector<std::vector<std::uint32_t>> live_pairs_;  // per block: its pairs not known apart
+  std::vector<Vec3>* angular_momentum_ = nullptr;       // world frame; runs with superquadrics only
+  std::vector<Vec3>* half_axes_ = nullptr;              // body frame; runs with superquadrics only
+  std::vector<double>* volume_ = nullptr;               // runs with superquadrics only
+  std::unique_ptr<GrainGlyphs> glyphs_;                 // runs with superquadrics only
   // Runs with superquadrics only: each grain's rotation, and the form of each sphere and
   // ellipsoid (dem/ellipsoid_contact.hpp), apart so that a pair of ellipsoids reads 96 bytes
   // of each grain (update_frames).
