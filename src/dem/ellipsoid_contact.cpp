@@ -61,24 +61,26 @@ struct Maximum {
 // F' < 0 above it narrow; a step leaving the bracket is replaced by bisection. F(t) <= F* for
 // every t, so F > 1 at any iterate proves the grains apart: the search stops there. A step
 // below kLastStep is the last: it is taken to first order (y + step dy/dt, F + step F'), whose
-// error, of order step^2, lies below round-off.
+// error, of order step^2, lies below round-off. Without convergence, t and F are those of the
+// last iterate (one call of contact_function, which the compiler inlines).
 Maximum maximise(const Pencil& p, double t) {
   double lo = 0.0;
   double hi = 1.0;
-  for (int n = 0; n < kMaxIterations; ++n) {
+  for (int n = 1;; ++n) {
     ContactFunction f = contact_function(p, t);
     if (f.value > 1.0)
-      return {t, f, n + 1, true};
+      return {t, f, n, true};
     const double step = f.curvature < 0.0 ? -f.slope / f.curvature : 0.0;
     if (f.curvature < 0.0 && std::abs(step) <= kLastStep) {
       f.y += step * f.dy_dt;
       f.value += step * f.slope;
-      return {t + step, f, n + 1, true};
+      return {t + step, f, n, true};
     }
+    if (n == kMaxIterations)
+      return {t, f, n, false};
     (f.slope > 0.0 ? lo : hi) = t;
     t = t + step > lo && t + step < hi ? t + step : 0.5 * (lo + hi);
   }
-  return {t, contact_function(p, t), kMaxIterations, false};
 }
 
 // The surface points x* + alpha n of i and x* + beta n of j, from their quadratics in the forms
@@ -86,7 +88,7 @@ Maximum maximise(const Pencil& p, double t) {
 void add_surface_points(const EllipsoidView& i, const EllipsoidView& j, const Maximum& m,
                         SuperquadricContact& c) {
   const double depth = 1.0 - m.f.value;
-  const double y = m.f.y.norm();
+  const double y = c.normal.dot(m.f.y);  // |y|: the normal is y / |y|
   const double b_i = (1.0 - m.t) * y;
   const double b_j = m.t * y;
   const double alpha =
