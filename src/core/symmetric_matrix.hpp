@@ -53,12 +53,6 @@ struct alignas(16) SymMat3 {
     return {r * c_xx, r * (xx * zz - xz * xz), r * (xx * yy - xy * xy), r * c_xy,
             r * c_xz, r * (xy * xz - xx * yz)};
   }
-
-  Mat3 full() const {
-    Mat3 m;
-    m << xx, xy, xz, xy, yy, yz, xz, yz, zz;
-    return m;
-  }
 };
 
 }  // namespace partimix

@@ -327,8 +327,8 @@ int DemSolver::block_loads(int b, double dt) {
 
 // The pairs [first, last) not known apart, gathered first (into `live`, which keeps its
 // memory), then loaded in order with the history and grain j's form of the pair a few ahead
-// prefetched: the loop is bound by the wait for them (measured: 11% faster on the ellipsoid
-// drum of bench/).
+// prefetched: the loop is bound by the wait for them (docs/performance.md: prefetching won 11%
+// on the spheroid drum, gathering the live pairs first 2% more).
 int DemSolver::live_pair_loads(std::vector<std::uint32_t>& live, std::size_t first,
                                std::size_t last, double dt) {
   live.resize(last - first);

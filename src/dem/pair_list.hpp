@@ -37,6 +37,8 @@ struct alignas(64) PairHistory {
 };
 static_assert(sizeof(PairHistory) == 64);
 
+// What a pair's contact does to its grains: the force on i (j gets its opposite) and the torque
+// on each.
 struct PairLoad {
   Vec3 force = Vec3::Zero();
   Vec3 torque_i = Vec3::Zero();

@@ -200,24 +200,29 @@ TEST(RigidRotation, EqualMomentsTurnAsTheSpheres) {
 
 // I1 = I2: the body momentum precesses about axis 3 at (1/I3 - 1/I1) L3 and the body turns as a
 // sphere of moment I1 about L; the splitting keeps only these two commuting flows, so it is exact
-// at any step (here about 0.2 rad per step).
+// at any step (here about 0.2 rad per step). Oblate (I3 the largest: the half steps vanish) and
+// prolate (I3 the smallest: the two half steps are taken as one full step).
 TEST(RigidRotation, SymmetricTopIsTurnedExactly) {
-  const Vec3 moments(1.0, 1.0, 3.0);
-  const RigidRotor top(moments);
-  const Quaternion start = start_orientation();
-  const Vec3 body(0.8, -0.4, 1.5);
-  const Vec3 momentum = start * body;
-  Quaternion q = start;
-  const double dt = 0.1;
-  const int steps = 500;
-  for (int n = 0; n < steps; ++n)
-    top.drift(q, momentum, dt);
-  const double t = steps * dt;
-  const Quaternion spin(Eigen::AngleAxisd((1.0 / 3.0 - 1.0) * body.z() * t, Vec3::UnitZ()));
-  const Quaternion exact =
-      Quaternion(Eigen::AngleAxisd(momentum.norm() * t, momentum.normalized())) * start * spin;
-  EXPECT_LT(angle_between(exact, q), 1e-12);
-  EXPECT_NEAR(top.kinetic_energy(q, momentum), top.kinetic_energy(start, momentum), 1e-14);
+  for (const double i3 : {3.0, 1.0 / 3.0}) {
+    const double i1 = 1.0;
+    const RigidRotor top(Vec3(i1, i1, i3));
+    const Quaternion start = start_orientation();
+    const Vec3 body(0.8, -0.4, 1.5);
+    const Vec3 momentum = start * body;
+    Quaternion q = start;
+    const double dt = 0.1;
+    const int steps = 500;
+    for (int n = 0; n < steps; ++n)
+      top.drift(q, momentum, dt);
+    const double t = steps * dt;
+    const Quaternion spin(Eigen::AngleAxisd((1.0 / i3 - 1.0 / i1) * body.z() * t, Vec3::UnitZ()));
+    const Quaternion exact =
+        Quaternion(Eigen::AngleAxisd(momentum.norm() / i1 * t, momentum.normalized())) * start *
+        spin;
+    EXPECT_LT(angle_between(exact, q), 1e-12) << "I3 = " << i3;
+    EXPECT_NEAR(top.kinetic_energy(q, momentum), top.kinetic_energy(start, momentum), 1e-14)
+        << "I3 = " << i3;
+  }
 }
 
 // From rest under a constant torque T, L = T t and, on a sphere or about a principal axis of
