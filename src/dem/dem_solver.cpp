@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 
 #include "core/error.hpp"
+#include "core/prefetch.hpp"
 #include "dem/tangential_contact.hpp"
 #include "dem/time_step.hpp"
 #include "particles/store_state.hpp"
@@ -327,8 +328,9 @@ int DemSolver::block_loads(int b, double dt) {
 
 // The pairs [first, last) not known apart, gathered first (into `live`, which keeps its
 // memory), then loaded in order with the history and grain j's form of the pair a few ahead
-// prefetched: the loop is bound by the wait for them (docs/performance.md: prefetching won 11%
-// on the spheroid drum, gathering the live pairs first 2% more).
+// prefetched: the loop is bound by the wait for them (docs/performance.md, "Fifth session").
+// The prefetches stay in the loop's body: moved into a function of their own, GCC judged that
+// function free of effects and dropped its calls.
 int DemSolver::live_pair_loads(std::vector<std::uint32_t>& live, std::size_t first,
                                std::size_t last, double dt) {
   live.resize(last - first);
@@ -339,20 +341,14 @@ int DemSolver::live_pair_loads(std::vector<std::uint32_t>& live, std::size_t fir
   }
   int failures = 0;
   for (std::size_t n = 0; n < count; ++n) {
-    if (n + kPrefetchAhead < count)
-      prefetch_pair(live[n + kPrefetchAhead]);
+    if (n + kPrefetchAhead < count) {
+      const std::uint32_t ahead = live[n + kPrefetchAhead];
+      prefetch_lines(&pairs_->history(ahead), sizeof(PairHistory));
+      prefetch_lines(&forms_[pairs_->second(ahead)], sizeof(EllipsoidForm));
+    }
     failures += pair_loads(live[n], dt);
   }
   return failures;
-}
-
-void DemSolver::prefetch_pair(std::size_t k) const {
-  const auto* history = reinterpret_cast<const char*>(&pairs_->history(k));
-  const auto* form = reinterpret_cast<const char*>(&forms_[pairs_->second(k)]);
-  for (std::size_t line = 0; line < sizeof(PairHistory); line += 64)
-    __builtin_prefetch(history + line);
-  for (std::size_t line = 0; line < sizeof(EllipsoidForm); line += 64)
-    __builtin_prefetch(form + line);
 }
 
 int DemSolver::pair_loads(std::size_t k, double dt) {

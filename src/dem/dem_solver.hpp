@@ -119,7 +119,6 @@ class DemSolver final : public Solver {
   int block_loads(int b, double dt);
   int live_pair_loads(std::vector<std::uint32_t>& live, std::size_t first, std::size_t last,
                       double dt);
-  void prefetch_pair(std::size_t k) const;
   int pair_loads(std::size_t k, double dt);
   int shaped_pair_loads(std::size_t k, const Vec3& rij, double dt);
   SuperquadricContact ellipsoid_contact(std::size_t i, std::size_t j, const Vec3& centre_j,
