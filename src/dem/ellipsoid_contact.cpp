@@ -7,16 +7,21 @@ namespace partimix::dem {
 namespace {
 
 constexpr int kMaxIterations = 60;
-constexpr double kLastStep = 1e-7;  // on t, which lies in (0, 1)
+// The last step: a Newton step s whose own error |F''' / (2 F'')| s^2 is below this (on t,
+// which lies in (0, 1)), taken to second order so that its error is of order s^3 (docs/dem.md).
+constexpr double kLastStepError = 1e-10;
 
-// F(t), F'(t) and F''(t) with y = C(t)^-1 d and dy/dt = -C^-1 D y (docs/dem.md, "Ellipsoid
-// pairs"); F only when F > 1, which proves the grains apart.
+// F(t) and its first three derivatives, with y = C(t)^-1 d, dy/dt = -C^-1 D y = -z and
+// d2y/dt2 = 2 C^-1 D z (docs/dem.md, "Ellipsoid pairs"); F only when F > 1, which proves the
+// grains apart.
 struct ContactFunction {
   double value;
   double slope;
   double curvature;
+  double third;
   Vec3 y;
   Vec3 dy_dt;
+  Vec3 d2y_dt2;
 };
 
 // The pair's data for the contact function: d and the two inverse shapes, B_i and B_j - B_i.
@@ -29,16 +34,22 @@ struct Pencil {
 ContactFunction contact_function(const Pencil& p, double t) {
   const SymMat3 c_inverse = p.inverse_shape_i.plus_scaled(t, p.difference).inverse();
   const double u = t * (1.0 - t);
-  ContactFunction f{0.0, 0.0, 0.0, c_inverse * p.d, Vec3::Zero()};
+  ContactFunction f{0.0, 0.0, 0.0, 0.0, c_inverse * p.d, Vec3::Zero(), Vec3::Zero()};
   const double s = p.d.dot(f.y);
   f.value = u * s;
   if (f.value > 1.0)
     return f;
   const Vec3 dy = p.difference * f.y;
-  f.dy_dt = -(c_inverse * dy);
+  const Vec3 z = c_inverse * dy;
+  const Vec3 dz = p.difference * z;
+  f.dy_dt = -z;
+  f.d2y_dt2 = 2.0 * (c_inverse * dz);
   const double q = f.y.dot(dy);
+  const double w = dy.dot(z);
+  const double r = z.dot(dz);
   f.slope = (1.0 - 2.0 * t) * s - u * q;
-  f.curvature = -2.0 * s - 2.0 * (1.0 - 2.0 * t) * q - 2.0 * u * dy.dot(f.dy_dt);
+  f.curvature = -2.0 * s - 2.0 * (1.0 - 2.0 * t) * q + 2.0 * u * w;
+  f.third = 6.0 * (q + (1.0 - 2.0 * t) * w - u * r);
   return f;
 }
 
@@ -59,10 +70,11 @@ struct Maximum {
 
 // Newton's method on F'(t) = 0 inside the bracket [lo, hi] that F' > 0 below the root and
 // F' < 0 above it narrow; a step leaving the bracket is replaced by bisection. F(t) <= F* for
-// every t, so F > 1 at any iterate proves the grains apart: the search stops there. A step
-// below kLastStep is the last: it is taken to first order (y + step dy/dt, F + step F'), whose
-// error, of order step^2, lies below round-off. Without convergence, t and F are those of the
-// last iterate (one call of contact_function, which the compiler inlines).
+// every t, so F > 1 at any iterate proves the grains apart: the search stops there. A Newton
+// step s = -F'/F'' whose error kappa s^2 (kappa = F'''/(2 F'')) is below kLastStepError is the
+// last: taken to second order, delta = s - kappa s^2, with y and F to second order in delta.
+// Without convergence, t and F are those of the last iterate (one call of contact_function,
+// which the compiler inlines).
 Maximum maximise(const Pencil& p, double t) {
   double lo = 0.0;
   double hi = 1.0;
@@ -71,10 +83,13 @@ Maximum maximise(const Pencil& p, double t) {
     if (f.value > 1.0)
       return {t, f, n, true};
     const double step = f.curvature < 0.0 ? -f.slope / f.curvature : 0.0;
-    if (f.curvature < 0.0 && std::abs(step) <= kLastStep) {
-      f.y += step * f.dy_dt;
-      f.value += step * f.slope;
-      return {t + step, f, n, true};
+    const double kappa = f.curvature < 0.0 ? f.third / (2.0 * f.curvature) : 0.0;
+    const double delta = step - kappa * step * step;
+    if (f.curvature < 0.0 && std::abs(kappa) * step * step <= kLastStepError && t + delta > lo &&
+        t + delta < hi) {
+      f.y += delta * f.dy_dt + 0.5 * delta * delta * f.d2y_dt2;
+      f.value += delta * f.slope + 0.5 * delta * delta * f.curvature;
+      return {t + delta, f, n, true};
     }
     if (n == kMaxIterations)
       return {t, f, n, false};
