@@ -139,6 +139,16 @@ TEST(EllipsoidContact, RandomPairsMatchTheReferenceAndTheGeneralMidwayPoint) {
   EXPECT_LT(worst_mu, 1e-9);
 }
 
+// Grain j of `pair` moved by `shift` L in a random direction and turned by `turn` rad about a
+// random axis: a pair's motion between two detections.
+void move_grain_j(reference::RandomPair& pair, reference::PairMaker& maker, double shift,
+                  double turn) {
+  const Vec3 direction = Vec3(maker.uniform(-1, 1), maker.uniform(-1, 1), maker.uniform(-1, 1));
+  pair.j.centre += shift * pair.length * direction.normalized();
+  const Vec3 axis = Vec3(1.0, maker.uniform(-1, 1), 0.5).normalized();
+  pair.j.rotation = Eigen::AngleAxisd(turn, axis).toRotationMatrix() * pair.j.rotation;
+}
+
 // After a small motion (j moves by 1% of L and turns by 1 degree) the iteration restarted from
 // the last multiplier takes at most 4 evaluations of F (2.0 on average) to the cold start's
 // contact; a pair then moved apart along its normal by its overlap and 5% of L is rejected by
@@ -153,12 +163,7 @@ TEST(EllipsoidContact, WarmStartsAndNearMissesAreCheap) {
     const SuperquadricContact before =
         find_ellipsoid_contact(ellipsoid_of(pair.i), ellipsoid_of(pair.j), std::nullopt);
     ASSERT_TRUE(before.touching);
-    const Vec3 shift = Vec3(maker.uniform(-1, 1), maker.uniform(-1, 1), maker.uniform(-1, 1));
-    pair.j.centre += 0.01 * pair.length * shift.normalized();
-    pair.j.rotation = Eigen::AngleAxisd(std::numbers::pi / 180.0,
-                                        Vec3(1.0, maker.uniform(-1, 1), 0.5).normalized())
-                          .toRotationMatrix() *
-                      pair.j.rotation;
+    move_grain_j(pair, maker, 0.01, std::numbers::pi / 180.0);
     const SuperquadricContact warm =
         find_ellipsoid_contact(ellipsoid_of(pair.i), ellipsoid_of(pair.j), before.mu);
     const SuperquadricContact cold =
@@ -185,8 +190,8 @@ TEST(EllipsoidContact, WarmStartsAndNearMissesAreCheap) {
 // 8 mm grains): restarted from the last multiplier, Newton's first step is then small enough
 // to be the last, taken to second order (docs/dem.md). One evaluation of F in at least 3/4 of
 // the pairs (measured: 85%), with the contact of the cold start to round-off: overlap 1e-13 L,
-// normal 1e-13 rad, contact point 1e-12 L, mu 1e-12 (measured: 8e-15, 1.1e-14, 9.6e-14,
-// 5.7e-14; the first-order last step of |s| <= 1e-7 it replaces gave 6e-14, 6e-15, 1.5e-13,
+// normal 1e-13 rad, contact point 1e-12 L, mu 1e-12 (measured: 7e-15, 1.5e-14, 1.3e-13,
+// 7.8e-14; the first-order last step of |s| <= 1e-7 it replaces gave 6e-14, 6e-15, 1.5e-13,
 // 8e-14 with two evaluations).
 TEST(EllipsoidContact, ADemStepsMotionTakesOneEvaluationToRoundOff) {
   reference::PairMaker maker(17, 1.0);
@@ -198,11 +203,7 @@ TEST(EllipsoidContact, ADemStepsMotionTakesOneEvaluationToRoundOff) {
     const SuperquadricContact before =
         find_ellipsoid_contact(ellipsoid_of(pair.i), ellipsoid_of(pair.j), std::nullopt);
     ASSERT_TRUE(before.touching);
-    const Vec3 shift = Vec3(maker.uniform(-1, 1), maker.uniform(-1, 1), maker.uniform(-1, 1));
-    pair.j.centre += 1e-4 * pair.length * shift.normalized();
-    pair.j.rotation = Eigen::AngleAxisd(1e-4, Vec3(maker.uniform(-1, 1), 1.0, 0.3).normalized())
-                          .toRotationMatrix() *
-                      pair.j.rotation;
+    move_grain_j(pair, maker, 1e-4, 1e-4);
     const SuperquadricContact warm =
         find_ellipsoid_contact(ellipsoid_of(pair.i), ellipsoid_of(pair.j), before.mu);
     const SuperquadricContact cold =
