@@ -234,8 +234,8 @@ void DemSolver::half_kick(std::size_t i, double dt, bool superquadric_spins) {
   store_.velocity()[i] += 0.5 * dt * ((*force_)[i] / m + gravity_);
   if (const auto& rotor = rotors_[(*species_)[i]]) {
     kick_angular_momentum((*angular_momentum_)[i], (*torque_)[i], dt);
-    if (superquadric_spins)
-      (*angular_velocity_)[i] = rotor->angular_velocity(orientation(i), (*angular_momentum_)[i]);
+    if (superquadric_spins)  // the orientation of this step's frames (update_frames)
+      (*angular_velocity_)[i] = rotor->angular_velocity(rotations_[i], (*angular_momentum_)[i]);
     return;
   }
   const double inertia = 0.4 * m * (*radius_)[i] * (*radius_)[i];
