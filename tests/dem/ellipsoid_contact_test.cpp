@@ -139,14 +139,28 @@ TEST(EllipsoidContact, RandomPairsMatchTheReferenceAndTheGeneralMidwayPoint) {
   EXPECT_LT(worst_mu, 1e-9);
 }
 
-// Grain j of `pair` moved by `shift` L in a random direction and turned by `turn` rad about a
-// random axis: a pair's motion between two detections.
-void move_grain_j(reference::RandomPair& pair, reference::PairMaker& maker, double shift,
-                  double turn) {
+// A touching random pair whose grain j then moved by `shift` L in a random direction and turned
+// by `turn` rad about a random axis (a pair's motion between two detections), with its contact
+// after the motion warm-started from the one before, and started cold.
+struct MovedPair {
+  reference::RandomPair pair;
+  SuperquadricContact warm;
+  SuperquadricContact cold;
+};
+
+MovedPair moved_touching_pair(reference::PairMaker& maker, double shift, double turn) {
+  MovedPair moved{maker.make(-maker.uniform(0.01, 0.2)), {}, {}};
+  reference::RandomPair& pair = moved.pair;
+  const SuperquadricContact before =
+      find_ellipsoid_contact(ellipsoid_of(pair.i), ellipsoid_of(pair.j), std::nullopt);
+  EXPECT_TRUE(before.touching);
   const Vec3 direction = Vec3(maker.uniform(-1, 1), maker.uniform(-1, 1), maker.uniform(-1, 1));
   pair.j.centre += shift * pair.length * direction.normalized();
   const Vec3 axis = Vec3(1.0, maker.uniform(-1, 1), 0.5).normalized();
   pair.j.rotation = Eigen::AngleAxisd(turn, axis).toRotationMatrix() * pair.j.rotation;
+  moved.warm = find_ellipsoid_contact(ellipsoid_of(pair.i), ellipsoid_of(pair.j), before.mu);
+  moved.cold = find_ellipsoid_contact(ellipsoid_of(pair.i), ellipsoid_of(pair.j), std::nullopt);
+  return moved;
 }
 
 // After a small motion (j moves by 1% of L and turns by 1 degree) the iteration restarted from
@@ -159,15 +173,7 @@ TEST(EllipsoidContact, WarmStartsAndNearMissesAreCheap) {
   int warm_steps = 0, most = 0, rejected_at_once = 0;
   const int pairs = 200;
   for (int k = 0; k < pairs; ++k) {
-    reference::RandomPair pair = maker.make(-maker.uniform(0.01, 0.2));
-    const SuperquadricContact before =
-        find_ellipsoid_contact(ellipsoid_of(pair.i), ellipsoid_of(pair.j), std::nullopt);
-    ASSERT_TRUE(before.touching);
-    move_grain_j(pair, maker, 0.01, std::numbers::pi / 180.0);
-    const SuperquadricContact warm =
-        find_ellipsoid_contact(ellipsoid_of(pair.i), ellipsoid_of(pair.j), before.mu);
-    const SuperquadricContact cold =
-        find_ellipsoid_contact(ellipsoid_of(pair.i), ellipsoid_of(pair.j), std::nullopt);
+    auto [pair, warm, cold] = moved_touching_pair(maker, 0.01, std::numbers::pi / 180.0);
     ASSERT_TRUE(warm.converged && warm.touching);
     EXPECT_NEAR(warm.overlap, cold.overlap, 1e-12 * pair.length);
     EXPECT_LT(angle(warm.normal, cold.normal), 1e-10);
@@ -199,15 +205,7 @@ TEST(EllipsoidContact, ADemStepsMotionTakesOneEvaluationToRoundOff) {
   double worst_overlap = 0.0, worst_normal = 0.0, worst_point = 0.0, worst_mu = 0.0;
   const int pairs = 400;
   for (int k = 0; k < pairs; ++k) {
-    reference::RandomPair pair = maker.make(-maker.uniform(0.01, 0.2));
-    const SuperquadricContact before =
-        find_ellipsoid_contact(ellipsoid_of(pair.i), ellipsoid_of(pair.j), std::nullopt);
-    ASSERT_TRUE(before.touching);
-    move_grain_j(pair, maker, 1e-4, 1e-4);
-    const SuperquadricContact warm =
-        find_ellipsoid_contact(ellipsoid_of(pair.i), ellipsoid_of(pair.j), before.mu);
-    const SuperquadricContact cold =
-        find_ellipsoid_contact(ellipsoid_of(pair.i), ellipsoid_of(pair.j), std::nullopt);
+    const auto [pair, warm, cold] = moved_touching_pair(maker, 1e-4, 1e-4);
     ASSERT_TRUE(warm.converged && warm.touching && cold.touching);
     once += warm.iterations == 1;
     worst_overlap = std::max(worst_overlap, std::abs(warm.overlap - cold.overlap) / pair.length);
