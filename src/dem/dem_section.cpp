@@ -207,6 +207,14 @@ GrainFill read_fill(Reader& section, const std::filesystem::path& folder,
   }
   read_fill_size(fill, species, request);
   request.seed = static_cast<std::uint32_t>(fill.optional<int>("seed", 1, at_least(0)));
+  request.attempts_per_grain =
+      fill.optional<int>("attempts", request.attempts_per_grain, at_least(1));
+  if (request.attempts_per_grain > kMostAttempts) {
+    throw fill.error("attempts",
+                     fmt::format("more than {:.0e} failed candidates in a row would let "
+                                 "a full region hold the run for minutes",
+                                 static_cast<double>(kMostAttempts)));
+  }
   result.settle_energy = fill.optional<double>("settle_energy", result.settle_energy, kPositive);
   result.settle_time = fill.optional<double>("settle_time", result.settle_time, kNonNegative);
   Reader split = fill.optional_map("split");

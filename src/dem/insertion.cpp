@@ -66,23 +66,60 @@ Eigen::Quaterniond random_turn(std::mt19937_64& random) {
   return Eigen::Quaterniond(q.normalized());
 }
 
-// Whether a candidate lies inside the region: a sphere wholly; a superquadric by its farthest
-// points along the six axes and along the region's outward normal nearest to its centre
-// (exact for boxes, cylinders and spheres at the grains' scale).
+// The region's outward direction at x: the gradient of its signed distance (central
+// differences of step h), zero where it has none.
+Vec3 outward(const geometry::Shape& region, const Vec3& x, double h) {
+  Vec3 gradient;
+  for (int k = 0; k < 3; ++k) {
+    gradient[k] = region.signed_distance(x + h * Vec3::Unit(k)) -
+                  region.signed_distance(x - h * Vec3::Unit(k));
+  }
+  return gradient;
+}
+
+// The largest signed distance to the region over a convex grain's surface, climbed from the
+// support point along d: each step takes the support point along the region's outward direction
+// at the last one, which for a convex region (a convex signed distance) never lowers the
+// distance (a conditional-gradient step, docs/dem.md, "Filling"); it stops when the point moves
+// by less than 1e-10 of the grain's radius.
+double farthest_outside(const geometry::Shape& region, const Vec3& x, double radius,
+                        const Superquadric& shape, const Mat3& turn, Vec3 d) {
+  constexpr int kMostSteps = 50;
+  const double h = 1e-3 * radius;
+  Vec3 point = x + turn * shape.support(turn.transpose() * d);
+  double distance = region.signed_distance(point);
+  for (int step = 0; step < kMostSteps; ++step) {
+    d = outward(region, point, h);
+    if (d.squaredNorm() == 0.0)
+      break;
+    const Vec3 next = x + turn * shape.support(turn.transpose() * d);
+    const double next_distance = region.signed_distance(next);
+    const bool settled = (next - point).norm() < 1e-10 * radius;
+    if (next_distance > distance) {
+      point = next;
+      distance = next_distance;
+    }
+    if (settled || next_distance <= distance - 1e-12 * radius)
+      break;
+  }
+  return distance;
+}
+
+// Whether a candidate lies inside the region: a sphere wholly; a superquadric when its bounding
+// sphere does, or else when its surface's largest signed distance, climbed from its farthest
+// points along the six axes and along the region's outward direction at its centre, is not
+// positive.
 bool inside(const geometry::Shape& region, const Vec3& x, double radius,
             const std::optional<Superquadric>& shape, const Mat3& turn) {
+  const double centre_distance = region.signed_distance(x);
+  if (centre_distance <= -radius)
+    return true;
   if (!shape)
-    return region.signed_distance(x) <= -radius;
-  const double h = 1e-3 * radius;
-  Vec3 outward;
-  for (int k = 0; k < 3; ++k) {
-    outward[k] = region.signed_distance(x + h * Vec3::Unit(k)) -
-                 region.signed_distance(x - h * Vec3::Unit(k));
-  }
-  for (const Vec3& d : {Vec3(Vec3::UnitX()), Vec3(-Vec3::UnitX()), Vec3(Vec3::UnitY()),
-                        Vec3(-Vec3::UnitY()), Vec3(Vec3::UnitZ()), Vec3(-Vec3::UnitZ()), outward}) {
-    if (d.squaredNorm() > 0.0 &&
-        region.signed_distance(x + turn * shape->support(turn.transpose() * d)) > 0.0)
+    return false;
+  for (const Vec3& d :
+       {Vec3(Vec3::UnitX()), Vec3(-Vec3::UnitX()), Vec3(Vec3::UnitY()), Vec3(-Vec3::UnitY()),
+        Vec3(Vec3::UnitZ()), Vec3(-Vec3::UnitZ()), outward(region, x, 1e-3 * radius)}) {
+    if (d.squaredNorm() > 0.0 && farthest_outside(region, x, radius, *shape, turn, d) > 0.0)
       return false;
   }
   return true;
@@ -118,7 +155,7 @@ Grains insert_random(const geometry::Shape& region, const InsertionRequest& requ
   Grains grains;
   PlacedSpheres placed(2.0 * request.radius_max);
   long attempts = 0;
-  for (int failures = 0; failures < request.attempts_per_sphere &&
+  for (int failures = 0; failures < request.attempts_per_grain &&
                          static_cast<int>(grains.position.size()) < request.count;) {
     ++attempts;
     const double radius =
@@ -150,9 +187,9 @@ Grains insert_random(const geometry::Shape& region, const InsertionRequest& requ
   }
   if (static_cast<int>(grains.position.size()) < request.count) {
     throw std::runtime_error(fmt::format(
-        "only {} of {} spheres fitted into the region without overlap ({} candidates in a row "
-        "failed, {} in all); make the region larger or the count smaller",
-        grains.position.size(), request.count, request.attempts_per_sphere, attempts));
+        "only {} of {} grains fitted into the region without overlap ({} candidates in a row "
+        "failed, {} in all); make the region larger, the count smaller or attempts larger",
+        grains.position.size(), request.count, request.attempts_per_grain, attempts));
   }
   return grains;
 }

@@ -210,6 +210,16 @@ TEST_F(BadInput, GrainsThatCannotFitAreRefusedWithoutDrawingCandidates) {
   EXPECT_THAT(outcome.err, HasSubstr("at the densest packing"));
 }
 
+TEST_F(BadInput, MoreFillAttemptsThanTheBoundAreRefused) {
+  const std::string text =
+      replaced(kGrainsInABox, "count: 100", "count: 100\n    attempts: 2000000");
+  const Outcome outcome = run_case(text);
+  expect_rejected(outcome);
+  EXPECT_THAT(outcome.err,
+              ContainsRegex(location(line_of(text, "attempts:"), "dem.fill.attempts")));
+  EXPECT_THAT(outcome.err, HasSubstr("more than 1e+06 failed candidates"));
+}
+
 TEST_F(BadInput, ATinySampleIntervalIsRefusedNotLoopedOn) {
   std::vector<std::string> arguments = kRun;
   arguments.insert(arguments.end(), {"--set", "time.sample_interval=1e-20"});
