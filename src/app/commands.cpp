@@ -58,14 +58,16 @@ void print_figures(const Runner& runner) {
     fmt::print(stderr, "warning: {}: {}\n", fmt::join(names, ", "), reason);
 }
 
+// The throughput is this process's: a resumed run's totals include the processes before it.
 void print_summary(const io::RunSummary& summary) {
-  const double throughput =
-      summary.wall_seconds > 0.0
-          ? static_cast<double>(summary.particles * summary.steps) / summary.wall_seconds
-          : 0.0;
-  fmt::print(stderr, "{}: {} steps to t = {:.6g} s in {:.1f} s ({:.3g} particle-steps/s)\n",
+  const double throughput = summary.process_wall_seconds > 0.0
+                                ? static_cast<double>(summary.particles * summary.process_steps) /
+                                      summary.process_wall_seconds
+                                : 0.0;
+  const bool resumed = summary.process_steps != summary.steps;
+  fmt::print(stderr, "{}: {} steps to t = {:.6g} s in {:.1f} s ({:.3g} particle-steps/s{})\n",
              summary.status, summary.steps, summary.simulated_time, summary.wall_seconds,
-             throughput);
+             throughput, resumed ? " in this process" : "");
   if (!summary.message.empty())
     fmt::print(stderr, "{}\n", summary.message);
 }

@@ -280,6 +280,7 @@ io::RunSummary Runner::run(const StateArchive* checkpoint) {
     start_fresh();
   io::RunSummary summary{"running",       "", simulation_.particle_count(), 0, 0.0, 0.0,
                          options_.threads};
+  first_step_ = state_.steps;
   wall_.restart();
   write_progress(summary);
   std::optional<Progress> progress;
@@ -354,12 +355,18 @@ void Runner::write_progress(const io::RunSummary& summary) {
   now.steps = state_.steps;
   now.simulated_time = state_.time;
   now.wall_seconds = wall_seconds();
+  count_this_process(now);
   write_metadata(now);
 }
 
 // The wall time of the run so far, this process and those before it (a resumed run).
 double Runner::wall_seconds() const {
   return state_.wall_seconds + wall_.seconds();
+}
+
+void Runner::count_this_process(io::RunSummary& summary) const {
+  summary.process_steps = state_.steps - first_step_;
+  summary.process_wall_seconds = wall_.seconds();
 }
 
 // The last sample and frame at the time the run stopped (unless it failed), the figures and
@@ -376,6 +383,7 @@ void Runner::finish(io::RunSummary& summary) {
   summary.steps = state_.steps;
   summary.simulated_time = state_.time;
   summary.wall_seconds = wall_seconds();
+  count_this_process(summary);
   for (const MethodOutputs& outputs : outputs_)
     outputs.add_figures(figures_, !case_.single_method());
   for (const MethodOutputs& outputs : outputs_)

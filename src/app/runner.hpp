@@ -63,6 +63,8 @@ class Runner {
   void loop(io::RunSummary& summary, std::optional<Progress>& progress);
   void write_progress(const io::RunSummary& summary);
   double wall_seconds() const;
+  // The steps and wall time of this process alone into the summary.
+  void count_this_process(io::RunSummary& summary) const;
   void finish(io::RunSummary& summary);
 
   const io::Case& case_;
@@ -78,7 +80,8 @@ class Runner {
   analysis::Figures figures_;
   analysis::Caveats caveats_;
   std::filesystem::path last_checkpoint_;
-  Stopwatch wall_;  // since this process started the run
+  Stopwatch wall_;                // since this process started the run
+  std::uint64_t first_step_ = 0;  // the run's step count when this process took it up
 };
 
 }  // namespace partimix::app

@@ -5,11 +5,16 @@
 #include "io/atomic_file.hpp"
 
 namespace partimix::io {
+namespace {
+
+double particle_steps_per_second(std::size_t particles, std::size_t steps, double seconds) {
+  const double particle_steps = static_cast<double>(particles) * static_cast<double>(steps);
+  return seconds > 0.0 ? particle_steps / seconds : 0.0;
+}
+
+}  // namespace
 
 nlohmann::json to_json(const RunSummary& summary) {
-  const double particle_steps =
-      static_cast<double>(summary.particles) * static_cast<double>(summary.steps);
-  const double rate = summary.wall_seconds > 0.0 ? particle_steps / summary.wall_seconds : 0.0;
   return {{"status", summary.status},
           {"message", summary.message},
           {"particles", summary.particles},
@@ -17,7 +22,13 @@ nlohmann::json to_json(const RunSummary& summary) {
           {"simulated_time", summary.simulated_time},
           {"wall_seconds", summary.wall_seconds},
           {"threads", summary.threads},
-          {"particle_steps_per_second", rate}};
+          {"particle_steps_per_second",
+           particle_steps_per_second(summary.particles, summary.steps, summary.wall_seconds)},
+          {"process_steps", summary.process_steps},
+          {"process_wall_seconds", summary.process_wall_seconds},
+          {"process_particle_steps_per_second",
+           particle_steps_per_second(summary.particles, summary.process_steps,
+                                     summary.process_wall_seconds)}};
 }
 
 void write_run_json(const std::filesystem::path& file, const nlohmann::json& content) {

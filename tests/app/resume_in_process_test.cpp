@@ -84,6 +84,12 @@ TEST(ResumeInProcess, TheSecondHalfFromACheckpointIsTheRunThatWentThrough) {
       io::CheckpointFolder(dir / "parts" / "checkpoints").read_latest(&used);
   const test_support::CaseRun resumed = run(whole, dir / "parts", &checkpoint);
   ASSERT_EQ(resumed.summary.status, "completed");
+  // This process's share: the steps after the checkpoint's, not the whole run's.
+  EXPECT_EQ(resumed.summary.steps, through.summary.steps);
+  EXPECT_EQ(through.summary.process_steps, through.summary.steps);
+  EXPECT_EQ(resumed.summary.process_steps,
+            resumed.summary.steps - static_cast<std::size_t>(checkpoint.integers("run/steps")[0]));
+  EXPECT_LT(resumed.summary.process_wall_seconds, resumed.summary.wall_seconds);
 
   EXPECT_EQ(read_file(dir / "whole" / "series.csv"), read_file(dir / "parts" / "series.csv"));
   EXPECT_EQ(read_file(dir / "whole" / "series_fine.csv"),

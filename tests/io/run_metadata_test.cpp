@@ -14,8 +14,9 @@ namespace {
 using test::read_file;
 using test::TempDir;
 
+// A resumed run: 500 steps in all, the last 200 in 0.5 s of this process.
 RunSummary example_summary() {
-  return {"completed", "", 1000, 500, 0.25, 2.0, 4};
+  return {"completed", "", 1000, 500, 0.25, 2.0, 4, 200, 0.5};
 }
 
 TEST(RunMetadata, SummaryHasEveryMemberAndThroughput) {
@@ -28,12 +29,17 @@ TEST(RunMetadata, SummaryHasEveryMemberAndThroughput) {
   EXPECT_EQ(json.at("wall_seconds"), 2.0);
   EXPECT_EQ(json.at("threads"), 4);
   EXPECT_EQ(json.at("particle_steps_per_second"), 250000.0);
+  EXPECT_EQ(json.at("process_steps"), 200);
+  EXPECT_EQ(json.at("process_wall_seconds"), 0.5);
+  EXPECT_EQ(json.at("process_particle_steps_per_second"), 400000.0);
 }
 
 TEST(RunMetadata, ZeroWallTimeGivesZeroThroughput) {
   RunSummary summary = example_summary();
   summary.wall_seconds = 0.0;
+  summary.process_wall_seconds = 0.0;
   EXPECT_EQ(to_json(summary).at("particle_steps_per_second"), 0.0);
+  EXPECT_EQ(to_json(summary).at("process_particle_steps_per_second"), 0.0);
 }
 
 TEST(RunMetadata, WrittenDocumentRoundTrips) {
