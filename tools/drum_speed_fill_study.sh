@@ -3,8 +3,8 @@
 # drum, reduced"): spheres (cases/drum_seed.yaml) and prolate spheroids of sigma = 1.5
 # (cases/drum_seed_ellipsoids.yaml), the drum cut to 20 mm along its periodic axis (4,000 grains,
 # the seed's 10,000 per 50 mm), at 20, 30, 40 and 50 rpm in the 200 mm drum (21% fill) and at
-# 30 rpm in drums of 240 and 320 mm (15% and 8% fill), 6 s after settling. The mixing cells keep
-# the size of the 200 mm drum's (20 mm), so the larger drums have more of them.
+# 30 rpm in drums of 220, 240, 280 and 320 mm (18, 15, 11 and 8% fill), 6 s after settling. The
+# mixing cells keep the size of the 200 mm drum's (20 mm), so the larger drums have more of them.
 #
 #     tools/drum_speed_fill_study.sh PARTIMIX OUT_DIR [JOBS] [SEED]
 #
@@ -76,7 +76,7 @@ mkdir -p "${out}"
     for rpm in 20 30 40 50; do
       echo "${shape} ${rpm} 0.1"
     done
-    for radius in 0.12 0.16; do
+    for radius in 0.11 0.12 0.14 0.16; do
       echo "${shape} 30 ${radius}"
     done
   done

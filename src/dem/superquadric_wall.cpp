@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 
 #include "geometry/contact_selection.hpp"
@@ -12,6 +13,61 @@ namespace {
 constexpr int kIterations = 20;
 constexpr double kNormalTolerance = 1e-20;  // |n_{k+1} - n_k|^2: 1e-10 rad
 constexpr int kFewFaces = 4;
+constexpr int kRidgeSteps = 64;  // bisections of the cone: its angle to 2^-64 of it
+
+// The grain's deepest point against the unit normal m (out of the wall): its support point in
+// the direction -m.
+Vec3 deepest_against(const Superquadric& shape, const Vec3& centre, const Mat3& rotation,
+                     const Vec3& m) {
+  return centre + rotation * shape.support(rotation.transpose() * (-m));
+}
+
+// The grain against the wedge behind a ridge's two faces (docs/dem.md, "Walls and
+// superquadrics", Convex edges): along the unit normal m(theta) = cos theta u + sin theta v of the
+// cone from normal_a = u towards normal_b the two overlap by f = m . (p - X(m)), p a point of the
+// edge and X(m) the grain's deepest point; the contact is the least f over the cone (the
+// separating-axis minimum). X is extremal along m, so m . dX = 0 and f' = m' . (p - X(m)): the
+// least f is at an end of the cone where f' does not change sign, else where f' = 0, found by
+// bisection on the sign of f' (which, unlike f near its least, is not lost in round-off). The
+// wall point X + f m is the foot on the end's plane, or on the edge's line where f' = 0; the
+// contact belongs to the face of the nearer end, so that it is the same contact as that face's
+// own when its deepest point lies over it.
+WallContact ridge_contact(const Superquadric& shape, const Vec3& centre, const Mat3& rotation,
+                          const geometry::Ridge& ridge) {
+  const Vec3& u = ridge.normal_a;
+  const Vec3 v = (ridge.normal_b - ridge.normal_b.dot(u) * u).normalized();
+  const double cone = std::atan2(ridge.normal_b.dot(v), ridge.normal_b.dot(u));
+  const auto normal_at = [&](double angle) {
+    return Vec3(std::cos(angle) * u + std::sin(angle) * v);
+  };
+  const auto slope_at = [&](double angle) {
+    const Vec3 turning = -std::sin(angle) * u + std::cos(angle) * v;
+    return turning.dot(ridge.start - deepest_against(shape, centre, rotation, normal_at(angle)));
+  };
+  double angle = 0.0;
+  if (slope_at(0.0) < 0.0) {
+    angle = cone;
+    if (slope_at(cone) > 0.0) {
+      double low = 0.0;
+      double high = cone;
+      for (int step = 0; step < kRidgeSteps && low < high; ++step) {
+        const double middle = 0.5 * (low + high);
+        (slope_at(middle) < 0.0 ? low : high) = middle;
+      }
+      angle = 0.5 * (low + high);
+    }
+  }
+  const Vec3 normal = normal_at(angle);
+  const Vec3 deepest = deepest_against(shape, centre, rotation, normal);
+  const double overlap = normal.dot(ridge.start - deepest);
+  const int face = angle <= 0.5 * cone ? ridge.face_a : ridge.face_b;
+  return {overlap > 0.0,
+          true,
+          normal,
+          overlap,
+          deepest + 0.5 * overlap * normal,
+          geometry::SurfacePoint{deepest + overlap * normal, normal, -overlap, face}};
+}
 
 }  // namespace
 
@@ -35,6 +91,8 @@ WallContact superquadric_face_contact(const Superquadric& shape, const Vec3& cen
       return contact;
     if (!surface.nearest_on_face(face, deepest, 2.0 * reach, at))
       return contact;
+    if (geometry::Ridge ridge; surface.ridge(at, ridge))
+      return ridge_contact(shape, centre, rotation, ridge);
     const bool settled = (at.normal - normal).squaredNorm() < kNormalTolerance;
     normal = at.normal;
     if (settled || k + 1 == kIterations) {

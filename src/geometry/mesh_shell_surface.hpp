@@ -24,7 +24,10 @@
 // neighbour's (out.face says which face answered); past concave edges only, the triangle's
 // plane goes on (as a box container's face past its closed edges); past a convex or free edge,
 // the normal points from the edge or corner to the point, turned over (gap -distance) for a
-// point behind the plane. shadowed(): a point of the same triangle, or of a deeper one.
+// point behind the plane. shadowed(): a point of the same triangle, or of a deeper one. ridge():
+// a point on a convex edge of its triangle (within the tolerance of "on"), the neighbour's normal
+// turned away from the triangle; or at a corner whose triangles take two normals only (a corner
+// on a straight ridge).
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -50,6 +53,7 @@ class MeshShellSurface final : public Surface {
   int faces_near(const Vec3& centre, double reach, std::span<int> out) const override;
   bool nearest_on_face(int face, const Vec3& point, double reach, SurfacePoint& out) const override;
   bool shadowed(const SurfacePoint& candidate, const SurfacePoint& deeper) const override;
+  bool ridge(const SurfacePoint& at, Ridge& out) const override;
   int max_contacts() const override { return 6; }
 
  private:
@@ -66,6 +70,10 @@ class MeshShellSurface final : public Surface {
   // The face of triangle `slot` on the side of `x`.
   int face_towards(std::uint32_t slot, const Vec3& x) const;
   SurfacePoint on_face(int face, const Vec3& point, const ClosestPoint& closest) const;
+  bool normal_across(std::uint32_t from, int k, const Vec3& from_normal, Vec3& out) const;
+  bool ridge_at_corner(std::uint32_t slot, int corner, const Vec3& side_normal, int face,
+                       Ridge& out) const;
+  int seen_side(std::uint32_t slot, const Vec3& normal) const;
 
   std::shared_ptr<const TriangleBvh> bvh_;
   Vec3 lower_;

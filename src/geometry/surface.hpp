@@ -24,6 +24,19 @@ struct SurfacePoint {
   int face = 0;                 // the face it lies on, >= 0 (stable for the surface's life)
 };
 
+// A convex edge of a surface seen from its material side: the segment [start, end] where two
+// faces meet (or a point of it), with each face's normal towards the material side and a face on
+// each side that holds the segment. Near it the wall is the wedge behind both faces (docs/dem.md,
+// "Walls and superquadrics", Convex edges).
+struct Ridge {
+  Vec3 start = Vec3::Zero();  // start = end: a corner on the ridge
+  Vec3 end = Vec3::Zero();
+  Vec3 normal_a = Vec3::UnitZ();
+  Vec3 normal_b = Vec3::UnitZ();
+  int face_a = 0;
+  int face_b = 0;
+};
+
 // The most contacts a surface reports for one grain (the buffers of the DEM solver).
 inline constexpr int kMaxSurfaceContacts = 8;
 
@@ -56,6 +69,10 @@ class Surface {
   // separates the face from every grain whose extent along that normal falls short of the gap
   // (docs/dem.md, "Walls and superquadrics"). The default: false.
   virtual bool face_is_convex(int /*face*/) const { return false; }
+  // Whether `at`, a point nearest_on_face() gave, lies on a convex edge of its face (or at a
+  // corner of it on a straight ridge), and that edge as `out`, `at`'s face as its face_a. The
+  // default: false (no such edges).
+  virtual bool ridge(const SurfacePoint& /*at*/, Ridge& /*out*/) const { return false; }
   // The most contacts contacts() gives for one grain (slots in the DEM solver's contact history),
   // at most kMaxSurfaceContacts.
   virtual int max_contacts() const { return 1; }

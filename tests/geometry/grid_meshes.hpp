@@ -3,6 +3,7 @@
 // of several faces"): a parallelogram cut into n_u x n_v cells, each split along the same
 // diagonal, so that an inner vertex belongs to six triangles and an inner edge to two.
 #include <array>
+#include <cmath>
 
 #include "geometry/stl_reader.hpp"
 
@@ -46,6 +47,18 @@ inline TriangleSoup corner_mesh(double h, int n) {
   const Vec3 origin(0.0, -n * h, 0.0);
   add_patch(soup, origin, h * Vec3::UnitX(), h * Vec3::UnitY(), n, 2 * n);
   add_patch(soup, origin, h * Vec3::UnitZ(), h * Vec3::UnitY(), n, 2 * n);
+  return soup;
+}
+
+// A roof: two flat parts meeting along the x axis (x in [-n h, n h]), each falling away from it
+// at `slope` (rad) for n cells of h; the ridge is convex seen from above.
+inline TriangleSoup roof_mesh(double slope, double h, int n) {
+  TriangleSoup soup;
+  const Vec3 origin(-n * h, 0.0, 0.0);
+  for (const double side : {-1.0, 1.0}) {
+    add_patch(soup, origin, h * Vec3::UnitX(),
+              h * Vec3(0.0, side * std::cos(slope), -std::sin(slope)), 2 * n, n);
+  }
   return soup;
 }
 
