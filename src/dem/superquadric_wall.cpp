@@ -1,10 +1,10 @@
 #include "dem/superquadric_wall.hpp"
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
 
+#include "dem/superquadric_edge_contact.hpp"
 #include "geometry/contact_selection.hpp"
 
 namespace partimix::dem {
@@ -13,73 +13,23 @@ namespace {
 constexpr int kIterations = 20;
 constexpr double kNormalTolerance = 1e-20;  // |n_{k+1} - n_k|^2: 1e-10 rad
 constexpr int kFewFaces = 4;
-constexpr int kRidgeSteps = 64;  // bisections of the cone: its angle to 2^-64 of it
+constexpr int kRidgesNear = 32;
+constexpr double kOnSegment = 1e-9;  // of the segment's length
 
-// The grain's deepest point against the unit normal m (out of the wall): its support point in
-// the direction -m.
-Vec3 deepest_against(const Superquadric& shape, const Vec3& centre, const Mat3& rotation,
-                     const Vec3& m) {
-  return centre + rotation * shape.support(rotation.transpose() * (-m));
-}
-
-// The grain against the wedge behind a ridge's two faces (docs/dem.md, "Walls and
-// superquadrics", Convex edges): along the unit normal m(theta) = cos theta u + sin theta v of the
-// cone from normal_a = u towards normal_b the two overlap by f = m . (p - X(m)), p a point of the
-// edge and X(m) the grain's deepest point; the contact is the least f over the cone (the
-// separating-axis minimum). X is extremal along m, so m . dX = 0 and f' = m' . (p - X(m)): the
-// least f is at an end of the cone where f' does not change sign, else where f' = 0, found by
-// bisection on the sign of f' (which, unlike f near its least, is not lost in round-off). The
-// wall point X + f m is the foot on the end's plane, or on the edge's line where f' = 0; the
-// contact belongs to the face of the nearer end, so that it is the same contact as that face's
-// own when its deepest point lies over it.
-WallContact ridge_contact(const Superquadric& shape, const Vec3& centre, const Mat3& rotation,
-                          const geometry::Ridge& ridge) {
-  const Vec3& u = ridge.normal_a;
-  const Vec3 v = (ridge.normal_b - ridge.normal_b.dot(u) * u).normalized();
-  const double cone = std::atan2(ridge.normal_b.dot(v), ridge.normal_b.dot(u));
-  const auto normal_at = [&](double angle) {
-    return Vec3(std::cos(angle) * u + std::sin(angle) * v);
-  };
-  const auto slope_at = [&](double angle) {
-    const Vec3 turning = -std::sin(angle) * u + std::cos(angle) * v;
-    return turning.dot(ridge.start - deepest_against(shape, centre, rotation, normal_at(angle)));
-  };
-  double angle = 0.0;
-  if (slope_at(0.0) < 0.0) {
-    angle = cone;
-    if (slope_at(cone) > 0.0) {
-      double low = 0.0;
-      double high = cone;
-      for (int step = 0; step < kRidgeSteps && low < high; ++step) {
-        const double middle = 0.5 * (low + high);
-        (slope_at(middle) < 0.0 ? low : high) = middle;
-      }
-      angle = 0.5 * (low + high);
-    }
-  }
-  const Vec3 normal = normal_at(angle);
-  const Vec3 deepest = deepest_against(shape, centre, rotation, normal);
-  const double overlap = normal.dot(ridge.start - deepest);
-  const int face = angle <= 0.5 * cone ? ridge.face_a : ridge.face_b;
-  return {overlap > 0.0,
-          true,
-          normal,
-          overlap,
-          deepest + 0.5 * overlap * normal,
-          geometry::SurfacePoint{deepest + overlap * normal, normal, -overlap, face}};
-}
-
-}  // namespace
-
-WallContact superquadric_face_contact(const Superquadric& shape, const Vec3& centre,
-                                      const Mat3& rotation, const geometry::Surface& surface,
-                                      int face) {
+// The grain against face `face` alone by the support-point iteration ("Walls and
+// superquadrics"); `on_ridge` when it reaches a convex edge or corner, whose contact is then
+// found by superquadric_face_contact.
+WallContact face_iteration(const Superquadric& shape, const Vec3& centre, const Mat3& rotation,
+                           const geometry::Surface& surface, int face, bool& on_ridge) {
   const double reach = shape.bounding_radius();
   geometry::SurfacePoint at;
-  WallContact contact{false, true, Vec3::UnitZ(), 0.0, Vec3::Zero(), {}};
+  WallContact contact{false,        true, Vec3::UnitZ(), -std::numeric_limits<double>::infinity(),
+                      Vec3::Zero(), {}};
   // The start: the face's normal at its point nearest the centre, whatever the gap there (the
   // face lies within reach: faces_near).
-  surface.nearest_on_face(face, centre, std::numeric_limits<double>::infinity(), at);
+  if (!surface.nearest_on_face(face, centre, std::numeric_limits<double>::infinity(), at) ||
+      !std::isfinite(at.gap))
+    return contact;  // out of sight (MeshShellSurface::nearest_on_face)
   Vec3 normal = at.normal;
   const bool convex = surface.face_is_convex(face);
   const double centre_gap = at.gap;
@@ -91,8 +41,10 @@ WallContact superquadric_face_contact(const Superquadric& shape, const Vec3& cen
       return contact;
     if (!surface.nearest_on_face(face, deepest, 2.0 * reach, at))
       return contact;
-    if (geometry::Ridge ridge; surface.ridge(at, ridge))
-      return ridge_contact(shape, centre, rotation, ridge);
+    if (geometry::Ridge ridge; surface.ridge(at, ridge)) {
+      on_ridge = true;
+      return contact;
+    }
     const bool settled = (at.normal - normal).squaredNorm() < kNormalTolerance;
     normal = at.normal;
     if (settled || k + 1 == kIterations) {
@@ -107,20 +59,89 @@ WallContact superquadric_face_contact(const Superquadric& shape, const Vec3& cen
   }
 }
 
+// Whether an edge's contact belongs to its segment: the foot of the wall point on the edge's line
+// lies on the segment (a corner's always does).
+bool on_segment(const WallContact& contact, const geometry::Ridge& ridge) {
+  const Vec3 along = ridge.end - ridge.start;
+  if (ridge.count > 2 || along.squaredNorm() == 0.0)
+    return true;
+  const double s = (contact.wall.point - ridge.start).dot(along) / along.squaredNorm();
+  return s >= -kOnSegment && s <= 1.0 + kOnSegment;
+}
+
+}  // namespace
+
+// Near the convex edges and corners of the face the wall is the solid behind several faces. The
+// face's plane, an edge's wedge and a corner's cone each hold that solid, so each gives an upper
+// bound on the grain's overlap with it, and the least of them is the overlap (docs/dem.md,
+// "Walls and superquadrics", Convex edges and corners): the iteration's contact when it stays
+// on the face, and each edge whose contact lies on its segment and each corner within reach.
+WallContact superquadric_face_contact(const Superquadric& shape, const Vec3& centre,
+                                      const Mat3& rotation, const geometry::Surface& surface,
+                                      int face) {
+  bool on_ridge = false;
+  WallContact least = face_iteration(shape, centre, rotation, surface, face, on_ridge);
+  std::array<geometry::Ridge, kRidgesNear> ridges;
+  const int count = surface.ridges_near(face, centre, 2.0 * shape.bounding_radius(), ridges);
+  if (on_ridge)
+    least.overlap = std::numeric_limits<double>::infinity();
+  bool converged = least.converged;
+  for (int k = 0; k < count; ++k) {
+    const WallContact edge = edge_contact(shape, centre, rotation, ridges[k]);
+    converged = converged && edge.converged;
+    if (on_segment(edge, ridges[k]) && edge.overlap < least.overlap)
+      least = edge;
+  }
+  if (least.overlap == std::numeric_limits<double>::infinity())
+    least.overlap = -least.overlap;
+  least.touching = least.overlap > 0.0;
+  least.converged = converged;
+  return least;
+}
+
 namespace {
 
-// The touching contacts of the `count` faces in `faces`, gathered in `found` (at least count
-// long), shadowed ones dropped.
+// Drops from `found` each contact whose face meets the face of a contact with less overlap at a
+// convex edge (Surface::convex_neighbours): near it the wall is one convex solid, which a convex
+// grain meets once, and each face's contact is an upper bound on the overlap with it. Returns
+// the number kept, first in `found`.
+int drop_convex_alternatives(const geometry::Surface& surface, std::span<WallContact> found) {
+  std::array<bool, kFaceCandidates> dropped{};
+  for (std::size_t k = 0; k < found.size(); ++k) {
+    for (std::size_t j = 0; j < found.size() && !dropped[k]; ++j) {
+      const bool less =
+          found[j].overlap < found[k].overlap || (found[j].overlap == found[k].overlap && j < k);
+      dropped[k] =
+          j != k && less && surface.convex_neighbours(found[j].wall.face, found[k].wall.face);
+    }
+  }
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < found.size(); ++k) {
+    if (!dropped[k])
+      found[kept++] = found[k];
+  }
+  return static_cast<int>(kept);
+}
+
+// The touching contacts of the faces in `faces`, gathered in `found` (at least as long):
+// alternatives across convex edges dropped (touching or not: a face apart can show that its
+// convex neighbour's contact is not one), then those not touching, then shadowed ones.
 int touching_face_contacts(const Superquadric& shape, const Vec3& centre, const Mat3& rotation,
                            const geometry::Surface& surface, std::span<const int> faces,
                            std::span<WallContact> found, std::span<WallContact> out,
                            int& failures) {
-  int touching = 0;
+  int measured = 0;
   for (const int face : faces) {
     const WallContact contact = superquadric_face_contact(shape, centre, rotation, surface, face);
     failures += contact.converged ? 0 : 1;
-    if (contact.touching)
-      found[touching++] = contact;
+    if (std::isfinite(contact.overlap))
+      found[measured++] = contact;
+  }
+  const int kept = drop_convex_alternatives(surface, found.first(measured));
+  int touching = 0;
+  for (int k = 0; k < kept; ++k) {
+    if (found[k].touching)
+      found[touching++] = found[k];
   }
   return geometry::select_contacts(
       surface, found.first(touching), out,

@@ -14,8 +14,6 @@ namespace {
 
 // A point within this fraction of the mesh's size from a triangle lies on it.
 constexpr double kOnTriangle = 1e-9;
-// Two triangles whose unit normals' cross product is below this are flat across their edge.
-constexpr double kFlat = 1e-9;
 
 using Corner = std::array<double, 3>;
 using Edge = std::pair<Corner, Corner>;  // the smaller corner first
@@ -45,6 +43,7 @@ MeshShellSurface::MeshShellSurface(const TriangleSoup& triangles)
   on_tolerance_ = kOnTriangle * (upper_ - lower_).norm();
   find_neighbours();
   find_flat_parts();
+  find_convex_neighbours();
 }
 
 MeshShellSurface::MeshShellSurface(std::shared_ptr<const TriangleBvh> bvh, const Vec3& lower,
@@ -53,6 +52,7 @@ MeshShellSurface::MeshShellSurface(std::shared_ptr<const TriangleBvh> bvh, const
   on_tolerance_ = kOnTriangle * (upper_ - lower_).norm();
   find_neighbours();
   find_flat_parts();
+  find_convex_neighbours();
 }
 
 // The neighbour across each edge: the other triangle with the same two corners (bit for bit),
@@ -228,22 +228,83 @@ int MeshShellSurface::flat_neighbour(int face, const Vec3& point) const {
   return 2 * static_cast<int>(neighbour) + (behind ? 1 : 0);
 }
 
-// On the edge (within the tolerance of "on") or past concave edges only, the plane goes on; past
-// a convex or free edge or corner, the normal points from it (at corner k the edges k and k + 2
-// meet).
+// On the edge (within the tolerance of "on") or past concave edges only, the plane goes on, for
+// a point in front of those edges' neighbours (behind one, the face is out of sight: the
+// neighbour's shell lies between them, as the top of a closed box lies between a grain above it
+// and the inside of its sides; the gap is then infinite); past a convex or free edge or corner,
+// the normal points from it. At a corner the edges that count are the flat part's own edges
+// there (part_corner), not a flat diagonal that the triangle has at it.
 SurfacePoint MeshShellSurface::beyond_triangle(int face, const Vec3& point,
                                                const ClosestPoint& closest) const {
   const auto slot = static_cast<std::uint32_t>(face / 2);
   const Vec3 side_normal = (face % 2 == 0 ? 1.0 : -1.0) * bvh_->unit_normal(slot);
-  const int first = closest.index;
-  const int second = closest.feature == TriangleFeature::kCorner ? (first + 2) % 3 : first;
   const double height = (point - bvh_->triangle(slot).corner[0]).dot(side_normal);
   const Vec3 foot = point - height * side_normal;
-  const bool on_edge = (foot - closest.point).squaredNorm() <= on_tolerance_ * on_tolerance_;
-  if (on_edge || (bend(slot, first, side_normal) == Bend::kConcave &&
-                  bend(slot, second, side_normal) == Bend::kConcave))
+  if ((foot - closest.point).squaredNorm() <= on_tolerance_ * on_tolerance_)
     return {foot, side_normal, height, face};
-  return on_face(face, point, closest);
+  PartCorner corner;
+  if (closest.feature == TriangleFeature::kCorner) {
+    corner = part_corner(slot, closest.index, side_normal, point);
+  } else {
+    corner.concave = bend(slot, closest.index, side_normal) == Bend::kConcave;
+    corner.behind = corner.concave && behind_concave_neighbour(slot, closest.index, point);
+  }
+  if (!corner.concave)
+    return on_face(face, point, closest);
+  return {foot, side_normal, corner.behind ? std::numeric_limits<double>::infinity() : height,
+          face};
+}
+
+// The flat part's edges at corner `corner` of triangle `slot`: walked to across the flat edges
+// that meet there, both ways round, up to the first edge that is not flat each way. concave:
+// every such edge is concave (none where the part goes all round the corner); behind: `point`
+// lies behind the neighbour across one of them.
+MeshShellSurface::PartCorner MeshShellSurface::part_corner(std::uint32_t slot, int corner,
+                                                           const Vec3& side_normal,
+                                                           const Vec3& point) const {
+  const Vec3 vertex = bvh_->triangle(slot).corner[corner];
+  PartCorner result{true, false};
+  for (const int first_edge : {corner, (corner + 2) % 3}) {
+    std::uint32_t current = slot;
+    int edge = first_edge;
+    Vec3 normal = side_normal;
+    for (int step = 0; step < kWalk; ++step) {
+      const Bend seen = bend(current, edge, normal);
+      if (seen != Bend::kFlat) {
+        result.concave = result.concave && seen == Bend::kConcave;
+        result.behind = result.behind ||
+                        (seen == Bend::kConcave && behind_concave_neighbour(current, edge, point));
+        break;
+      }
+      Vec3 next_normal;
+      normal_across(current, edge, normal, next_normal);
+      const auto next = static_cast<std::uint32_t>(neighbours_[current][edge]);
+      if (next == slot)
+        break;  // all round: the corner lies inside the part
+      const Triangle& triangle = bvh_->triangle(next);
+      int at = 0;
+      while (at < 3 && triangle.corner[at] != vertex)
+        ++at;
+      if (at == 3)
+        break;
+      edge = neighbours_[next][at] == static_cast<std::int32_t>(current) ? (at + 2) % 3 : at;
+      current = next;
+      normal = next_normal;
+    }
+  }
+  return result;
+}
+
+// Whether `point` lies behind the neighbour across concave edge k of triangle `slot`: on the side
+// of the neighbour's plane away from the triangle (whose corner off the edge lies in front).
+bool MeshShellSurface::behind_concave_neighbour(std::uint32_t slot, int k,
+                                                const Vec3& point) const {
+  const auto neighbour = static_cast<std::uint32_t>(neighbours_[slot][k]);
+  const Triangle& triangle = bvh_->triangle(slot);
+  const Vec3& normal = bvh_->unit_normal(neighbour);
+  const double off_edge = (triangle.corner[(k + 2) % 3] - triangle.corner[k]).dot(normal);
+  const double height = (point - triangle.corner[k]).dot(normal);
+  return (off_edge > 0.0 ? height : -height) < -on_tolerance_;
 }
 
 // The candidate is a point of the deeper one's flat part when both come from one part, when it
@@ -266,107 +327,6 @@ bool MeshShellSurface::shadowed(const SurfacePoint& candidate, const SurfacePoin
     }
   }
   return bvh_->closest_on(other, candidate.point).distance_squared <= on_tolerance_ * on_tolerance_;
-}
-
-// The normal of triangle `slot` seen from the grains' side, given the side normal of its
-// neighbour across its edge k (`from`): flat, the same way; convex, away from the neighbour's
-// corner off that edge; false when the edge is concave (no wedge) or free.
-bool MeshShellSurface::normal_across(std::uint32_t from, int k, const Vec3& from_normal,
-                                     Vec3& out) const {
-  const Bend seen = bend(from, k, from_normal);
-  if (seen == Bend::kFree || seen == Bend::kConcave)
-    return false;
-  const auto slot = static_cast<std::uint32_t>(neighbours_[from][k]);
-  const Vec3& normal = bvh_->unit_normal(slot);
-  const Triangle& triangle = bvh_->triangle(from);
-  const Vec3 off_edge = triangle.corner[(k + 2) % 3] - triangle.corner[k];
-  const bool turned =
-      seen == Bend::kFlat ? normal.dot(from_normal) < 0.0 : off_edge.dot(normal) > 0.0;
-  out = turned ? Vec3(-normal) : normal;
-  return true;
-}
-
-// A convex edge, or a corner where the triangles around it (walked across the edges that meet
-// there) take exactly two normals, as two faces meeting at a straight ridge do. face_b: the
-// neighbour across the edge, or at a corner the first triangle met with the other normal; both
-// faces hold the ridge's points, so shadowed() keeps a contact on the ridge once.
-bool MeshShellSurface::ridge(const SurfacePoint& at, Ridge& out) const {
-  const auto slot = static_cast<std::uint32_t>(at.face / 2);
-  const Vec3 side_normal = (at.face % 2 == 0 ? 1.0 : -1.0) * bvh_->unit_normal(slot);
-  const Triangle& triangle = bvh_->triangle(slot);
-  // The edges within the tolerance of "on" of the point: one, an edge; two, their corner.
-  std::array<int, 3> on{};
-  int count = 0;
-  for (int k = 0; k < 3; ++k) {
-    const Vec3& a = triangle.corner[k];
-    const Vec3 edge = triangle.corner[(k + 1) % 3] - a;
-    const double s = std::clamp((at.point - a).dot(edge) / edge.squaredNorm(), 0.0, 1.0);
-    if ((at.point - a - s * edge).squaredNorm() <= on_tolerance_ * on_tolerance_)
-      on[count++] = k;
-  }
-  if (count == 0 || count == 3)
-    return false;
-  if (count == 2) {  // edges k and k + 1 meet at corner k + 1; edges 0 and 2 at corner 0
-    const int corner = on[1] == on[0] + 1 ? on[1] : on[0];
-    return ridge_at_corner(slot, corner, side_normal, at.face, out);
-  }
-  const int k = on[0];
-  Vec3 other;
-  if (bend(slot, k, side_normal) != Bend::kConvex || !normal_across(slot, k, side_normal, other))
-    return false;
-  const auto neighbour = static_cast<std::uint32_t>(neighbours_[slot][k]);
-  const int neighbour_face = 2 * static_cast<int>(neighbour) + seen_side(neighbour, other);
-  out = {triangle.corner[k], triangle.corner[(k + 1) % 3], side_normal, other, at.face,
-         neighbour_face};
-  return true;
-}
-
-// Around corner `corner` of triangle `slot`: each step crosses the other edge of the current
-// triangle that meets at the corner.
-bool MeshShellSurface::ridge_at_corner(std::uint32_t slot, int corner, const Vec3& side_normal,
-                                       int face, Ridge& out) const {
-  const Vec3 vertex = bvh_->triangle(slot).corner[corner];
-  std::uint32_t current = slot;
-  Vec3 normal = side_normal;
-  int edge = corner;  // edges corner and corner + 2 meet at the corner
-  Vec3 other = side_normal;
-  int other_face = -1;
-  for (int step = 0; step < kWalk; ++step) {
-    Vec3 next_normal;
-    if (!normal_across(current, edge, normal, next_normal))
-      return false;
-    const auto next = static_cast<std::uint32_t>(neighbours_[current][edge]);
-    if (next_normal.cross(side_normal).norm() > kFlat) {
-      if (other_face >= 0 && next_normal.cross(other).norm() > kFlat)
-        return false;  // a third normal: a cone of more than two faces
-      if (other_face < 0) {
-        other = next_normal;
-        other_face = 2 * static_cast<int>(next) + seen_side(next, next_normal);
-      }
-    }
-    if (next == slot) {
-      if (other_face < 0)
-        return false;
-      out = {vertex, vertex, side_normal, other, face, other_face};
-      return true;
-    }
-    const Triangle& triangle = bvh_->triangle(next);
-    int at = 0;
-    while (at < 3 && triangle.corner[at] != vertex)
-      ++at;
-    if (at == 3)
-      return false;
-    // The edge of `next` at the corner that does not lead back to `current`.
-    edge = neighbours_[next][at] == static_cast<std::int32_t>(current) ? (at + 2) % 3 : at;
-    current = next;
-    normal = next_normal;
-  }
-  return false;
-}
-
-// 0 when `normal` is triangle `slot`'s own normal, 1 when it is turned over.
-int MeshShellSurface::seen_side(std::uint32_t slot, const Vec3& normal) const {
-  return bvh_->unit_normal(slot).dot(normal) < 0.0 ? 1 : 0;
 }
 
 }  // namespace partimix::geometry

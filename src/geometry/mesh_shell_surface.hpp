@@ -26,11 +26,14 @@
 // the normal points from the edge or corner to the point, turned over (gap -distance) for a
 // point behind the plane. shadowed(): a point of the same triangle, or of a deeper one. ridge():
 // a point on a convex edge of its triangle (within the tolerance of "on"), the neighbour's normal
-// turned away from the triangle; or at a corner whose triangles take two normals only (a corner
-// on a straight ridge).
+// turned away from the triangle; or at a corner whose edges are all convex or flat, its distinct
+// normals in order around it (at most Ridge::kMaxFaces). ridges_near(): the convex edges of the
+// face's flat part, and its convex corners of three or more normals, within reach. A face's side
+// of its flat part (part_side) is what convex_neighbours() compares.
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "geometry/stl_reader.hpp"
@@ -54,10 +57,14 @@ class MeshShellSurface final : public Surface {
   bool nearest_on_face(int face, const Vec3& point, double reach, SurfacePoint& out) const override;
   bool shadowed(const SurfacePoint& candidate, const SurfacePoint& deeper) const override;
   bool ridge(const SurfacePoint& at, Ridge& out) const override;
+  int ridges_near(int face, const Vec3& centre, double reach, std::span<Ridge> out) const override;
+  bool convex_neighbours(int face_a, int face_b) const override;
   int max_contacts() const override { return 6; }
 
  private:
   enum class Bend : std::uint8_t { kFree, kFlat, kConcave, kConvex };
+  // Two triangles whose unit normals' cross product is below this are flat across their edge.
+  static constexpr double kFlat = 1e-9;
 
   void find_neighbours();
   void find_flat_parts();
@@ -67,13 +74,22 @@ class MeshShellSurface final : public Surface {
   int flat_neighbour(int face, const Vec3& point) const;
   // nearest_on_face() beyond the triangle, at its edge or corner `closest`.
   SurfacePoint beyond_triangle(int face, const Vec3& point, const ClosestPoint& closest) const;
+  bool behind_concave_neighbour(std::uint32_t slot, int k, const Vec3& point) const;
+  struct PartCorner {
+    bool concave = true;
+    bool behind = false;
+  };
+  PartCorner part_corner(std::uint32_t slot, int corner, const Vec3& side_normal,
+                         const Vec3& point) const;
   // The face of triangle `slot` on the side of `x`.
   int face_towards(std::uint32_t slot, const Vec3& x) const;
   SurfacePoint on_face(int face, const Vec3& point, const ClosestPoint& closest) const;
   bool normal_across(std::uint32_t from, int k, const Vec3& from_normal, Vec3& out) const;
-  bool ridge_at_corner(std::uint32_t slot, int corner, const Vec3& side_normal, int face,
-                       Ridge& out) const;
+  bool convex_corner(std::uint32_t slot, int corner, Ridge& out) const;
   int seen_side(std::uint32_t slot, const Vec3& normal) const;
+  void find_convex_neighbours();
+  int part_side(int face) const;
+  int face_on_side(std::uint32_t slot, int side) const;
 
   std::shared_ptr<const TriangleBvh> bvh_;
   Vec3 lower_;
@@ -81,6 +97,7 @@ class MeshShellSurface final : public Surface {
   double on_tolerance_ = 0.0;                            // a point this near a triangle lies on it
   std::vector<std::array<std::int32_t, 3>> neighbours_;  // by slot and edge; -1: none
   std::vector<std::int32_t> parts_;                      // the flat part of each slot
+  std::vector<std::pair<int, int>> convex_pairs_;  // part sides meeting at a convex edge, sorted
 };
 
 }  // namespace partimix::geometry

@@ -11,6 +11,7 @@
 // positive for a centre on the material side and negative for a centre that has crossed the
 // surface (still in contact, with overlap R - gap). Each surface's header says exactly what it
 // returns at its edges, rims and open faces.
+#include <array>
 #include <span>
 
 #include "core/vec.hpp"
@@ -24,17 +25,18 @@ struct SurfacePoint {
   int face = 0;                 // the face it lies on, >= 0 (stable for the surface's life)
 };
 
-// A convex edge of a surface seen from its material side: the segment [start, end] where two
-// faces meet (or a point of it), with each face's normal towards the material side and a face on
-// each side that holds the segment. Near it the wall is the wedge behind both faces (docs/dem.md,
-// "Walls and superquadrics", Convex edges).
+// Where faces of a surface meet in a convex way seen from its material side: an edge, the segment
+// [start, end] between two faces, or a corner (start = end) of two or more faces (two: a corner
+// along a straight edge). `normals` holds the faces' unit normals towards the material side, in
+// their order around the corner, each with a face that holds the edge or corner. Near it the wall
+// is the solid behind all these faces (docs/dem.md, "Walls and superquadrics", Convex edges).
 struct Ridge {
-  Vec3 start = Vec3::Zero();  // start = end: a corner on the ridge
+  static constexpr int kMaxFaces = 8;
+  Vec3 start = Vec3::Zero();
   Vec3 end = Vec3::Zero();
-  Vec3 normal_a = Vec3::UnitZ();
-  Vec3 normal_b = Vec3::UnitZ();
-  int face_a = 0;
-  int face_b = 0;
+  std::array<Vec3, kMaxFaces> normals;
+  std::array<int, kMaxFaces> faces{};
+  int count = 0;
 };
 
 // The most contacts a surface reports for one grain (the buffers of the DEM solver).
@@ -69,10 +71,18 @@ class Surface {
   // separates the face from every grain whose extent along that normal falls short of the gap
   // (docs/dem.md, "Walls and superquadrics"). The default: false.
   virtual bool face_is_convex(int /*face*/) const { return false; }
-  // Whether `at`, a point nearest_on_face() gave, lies on a convex edge of its face (or at a
-  // corner of it on a straight ridge), and that edge as `out`, `at`'s face as its face_a. The
-  // default: false (no such edges).
+  // Whether `at`, a point nearest_on_face() gave, lies on a convex edge or corner of its face,
+  // and that edge or corner as `out`, with `at`'s face first. The default: false (none).
   virtual bool ridge(const SurfacePoint& /*at*/, Ridge& /*out*/) const { return false; }
+  // The convex edges (as segments) and convex corners of three or more faces of face `face`
+  // within `reach` of `centre`, at most out.size(); returns their number. The default: none.
+  virtual int ridges_near(int /*face*/, const Vec3& /*centre*/, double /*reach*/,
+                          std::span<Ridge> /*out*/) const {
+    return 0;
+  }
+  // Whether faces a and b meet at a convex edge seen from the material side (near it the wall is
+  // one convex solid, which a convex grain meets once). The default: false.
+  virtual bool convex_neighbours(int /*face_a*/, int /*face_b*/) const { return false; }
   // The most contacts contacts() gives for one grain (slots in the DEM solver's contact history),
   // at most kMaxSurfaceContacts.
   virtual int max_contacts() const { return 1; }

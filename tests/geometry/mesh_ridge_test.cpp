@@ -1,8 +1,9 @@
 // Convex edges of a mesh as ridges (MeshShellSurface::ridge; docs/dem.md, "Walls and
 // superquadrics", Convex edges): a point on the ridge of a roof, inside a triangle's edge or at a
 // corner along the ridge, is a ridge with the two parts' normals towards the grains and a face
-// on each side holding the point; a point inside a triangle, on a flat edge or corner, in a
-// concave corner, on the roof's underside and at a cube's corner (three normals) is not.
+// on each side holding the point; a cube's corner seen from outside is the cone of its three
+// normals; a point inside a triangle, on a flat edge or corner, in a concave corner and on the
+// roof's underside is not a ridge.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -40,16 +41,17 @@ void expect_roof_ridge(const MeshShellSurface& roof, const Vec3& above, bool cor
   ASSERT_TRUE(roof.ridge(at, ridge));
   const Vec3 left(0.0, -std::sin(kSlope), std::cos(kSlope));
   const Vec3 right(0.0, std::sin(kSlope), std::cos(kSlope));
-  const bool from_left = (ridge.normal_a - left).norm() < 1e-12;
-  EXPECT_LT((ridge.normal_a - (from_left ? left : right)).norm(), 1e-12);
-  EXPECT_LT((ridge.normal_b - (from_left ? right : left)).norm(), 1e-12);
-  EXPECT_EQ(ridge.face_a, at.face);
-  EXPECT_NE(ridge.face_b / 2, ridge.face_a / 2);
+  ASSERT_EQ(ridge.count, 2);
+  const bool from_left = (ridge.normals[0] - left).norm() < 1e-12;
+  EXPECT_LT((ridge.normals[0] - (from_left ? left : right)).norm(), 1e-12);
+  EXPECT_LT((ridge.normals[1] - (from_left ? right : left)).norm(), 1e-12);
+  EXPECT_EQ(ridge.faces[0], at.face);
+  EXPECT_NE(ridge.faces[1] / 2, ridge.faces[0] / 2);
   EXPECT_EQ((ridge.start - ridge.end).norm() == 0.0, corner);
   for (const Vec3& end : {ridge.start, ridge.end}) {
     EXPECT_LT(end.tail<2>().norm(), 1e-15);  // on the x axis
-    expect_face_holds(roof, ridge.face_a, end);
-    expect_face_holds(roof, ridge.face_b, end);
+    expect_face_holds(roof, ridge.faces[0], end);
+    expect_face_holds(roof, ridge.faces[1], end);
   }
 }
 
@@ -70,13 +72,31 @@ TEST(MeshRidge, TheRidgeOfARoofIsAWedgeOfItsTwoNormals) {
   EXPECT_FALSE(ridge_at(roof, Vec3(0.3 * kCell, 0.0, -2e-3), ridge));  // underneath: concave
 }
 
-TEST(MeshRidge, ConcaveCornersAndCornersOfThreeFacesAreNoRidges) {
+TEST(MeshRidge, ACubesCornerSeenFromOutsideIsAConeOfItsThreeNormals) {
+  const MeshShellSurface cube(testing::cube_mesh(4.0 * kCell, 4));
+  const Vec3 corner = 4.0 * kCell * Vec3::Ones();
+  const SurfacePoint at = nearest_point(cube, Vec3(5.0, 5.0, 5.0) * kCell);
+  Ridge ridge;
+  ASSERT_TRUE(cube.ridge(at, ridge));
+  ASSERT_EQ(ridge.count, 3);
+  EXPECT_EQ(ridge.faces[0], at.face);
+  EXPECT_LT((ridge.start - corner).norm(), 1e-15);
+  EXPECT_LT((ridge.end - corner).norm(), 1e-15);
+  Vec3 sum = Vec3::Zero();
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(ridge.normals[k].maxCoeff(), 1.0, 1e-12);  // +x, +y or +z
+    sum += ridge.normals[k];
+    expect_face_holds(cube, ridge.faces[k], corner);
+  }
+  EXPECT_LT((sum - Vec3::Ones()).norm(), 1e-12);
+  ASSERT_TRUE(ridge_at(cube, Vec3(5.0, 5.0, 0.5) * kCell, ridge));  // an edge
+  EXPECT_EQ(ridge.count, 2);
+}
+
+TEST(MeshRidge, ConcaveCornersAreNoRidges) {
   Ridge ridge;
   const MeshShellSurface corner(testing::corner_mesh(kCell, 8));
   EXPECT_FALSE(ridge_at(corner, Vec3(2e-3, 0.3 * kCell, 2e-3), ridge));
-  const MeshShellSurface cube(testing::cube_mesh(4.0 * kCell, 4));
-  EXPECT_FALSE(ridge_at(cube, Vec3(5.0, 5.0, 5.0) * kCell, ridge));  // outside a corner
-  EXPECT_TRUE(ridge_at(cube, Vec3(5.0, 5.0, 0.5) * kCell, ridge));   // outside an edge
 }
 
 }  // namespace
