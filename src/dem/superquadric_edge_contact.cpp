@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 namespace partimix::dem {
 namespace {
@@ -13,7 +12,6 @@ constexpr int kBisections = 64;  // an arc's angle to 2^-64 of it
 constexpr int kArcSamples = 8;
 constexpr int kCornerIterations = 40;
 constexpr double kSettled = 1e-12;        // rad: a corner's iteration has settled below this move
-constexpr double kHemisphere = 0.05;      // the chart's least cosine from its middle
 constexpr double kLongestReach = 1024.0;  // steps
 
 // The grain, and its deepest point against a unit normal m out of the wall: its support point in
@@ -97,12 +95,17 @@ ArcLeast arc_least(const Grain& grain, const Vec3& p, const Vec3& unit_a, const 
   return {best, angle > 0.5 * arc};
 }
 
-// Whether the unit normal m lies in the corner's cone of normals, a convex spherical polygon: on
-// the inner side of each of its arcs.
-bool in_cone(const geometry::Ridge& ridge, const Vec3& m) {
+// The unit direction of the sum of the corner's normals, inside its cone.
+Vec3 cone_middle(const geometry::Ridge& ridge) {
   Vec3 middle = Vec3::Zero();
   for (int k = 0; k < ridge.count; ++k)
     middle += ridge.normals[k];
+  return middle.normalized();
+}
+
+// Whether the unit normal m lies in the corner's cone of normals, a convex spherical polygon: on
+// the inner side of each of its arcs, as its middle is.
+bool in_cone(const geometry::Ridge& ridge, const Vec3& middle, const Vec3& m) {
   for (int k = 0; k < ridge.count; ++k) {
     const Vec3 side = ridge.normals[k].cross(ridge.normals[(k + 1) % ridge.count]);
     if (side.dot(m) * side.dot(middle) < 0.0)
@@ -111,15 +114,15 @@ bool in_cone(const geometry::Ridge& ridge, const Vec3& m) {
   return true;
 }
 
-// The least f over the corner's cone of normals, from m inside it, while f is convex there: quasi-
+// The least f over the corner's cone of normals, from its middle, while f is convex there: quasi-
 // Newton (BFGS; Nocedal & Wright 2006, "Numerical Optimization", section 6.1) in the
 // gnomonic chart m = w / |w|, w = middle + xi_1 e1 + xi_2 e2, whose straight lines are great
 // circles, each step's line searched exactly by arc_least (over twice the step, and four times
 // as far again after a search that ended at the end of its line: far from the least, f can be
 // nearly straight, and BFGS's curvature then says nothing). The gradient is exact:
 // dF/dxi = E^T (p - X - f m) / |w|, E = (e1 e2) (f's gradient on the sphere is the part of
-// p - X across m). The chart's middle is the cone's. kLeft when it leaves the cone (the least is
-// then on the cone's boundary), kStuck when it does not settle.
+// p - X across m). kLeft when it leaves the cone (the least is then on the cone's boundary),
+// kStuck when it does not settle.
 enum class Search { kFound, kLeft, kStuck };
 
 Search least_inside(const Grain& grain, const geometry::Ridge& ridge, const Vec3& middle,
@@ -153,7 +156,7 @@ Search least_inside(const Grain& grain, const geometry::Ridge& ridge, const Vec3
       return Search::kFound;
     }
     const Along next = arc_least(grain, p, here.normal, ahead).at;
-    if (!in_cone(ridge, next.normal))
+    if (!in_cone(ridge, middle, next.normal))
       return Search::kLeft;
     const Eigen::Vector2d moved = chart(next.normal) - xi;
     const Eigen::Vector2d next_gradient = gradient_at(next);
@@ -204,12 +207,8 @@ WallContact corner_contact(const Grain& grain, const geometry::Ridge& ridge) {
   }
   if (!(least.overlap > 0.0))
     return contact_of(least, face, true);
-  Vec3 middle = Vec3::Zero();
-  for (int k = 0; k < ridge.count; ++k)
-    middle += ridge.normals[k];
-  middle.normalize();
   Along inside = least;
-  const Search search = least_inside(grain, ridge, middle, inside);
+  const Search search = least_inside(grain, ridge, cone_middle(ridge), inside);
   if (search != Search::kFound || !(inside.overlap < least.overlap))
     return contact_of(least, face, search != Search::kStuck);
   int nearest = 0;
