@@ -7,9 +7,14 @@ Each RUN_DIR is the output folder of one `partimix run` of cases/drum_seed_ellip
 run.json names the aspect ratio sigma = c / a of species 0). Prints one Markdown table row per
 run, sorted by sigma: the Lacey index at the end, the fitted mixing rates (exp and erf, from
 run.json's figures), and the mean translational and rotational kinetic energies per grain over
-t >= --from (series.csv). Writes OUT_DIR/aspect_ratio_study.csv with the same columns and, in
---figures (default OUT_DIR), drum_aspect_ratio_lacey.png (M against time, one line per sigma)
-and drum_aspect_ratio_rates.png (the rate and the two energies against sigma).
+t >= --from (series.csv); and, where the run has them, the mean orientation order over the same
+samples (NaN where it has not, as spheres): `flow_alignment`, S_dir against each grain's
+direction of motion, and `nematic_order`, S, of an `orientation_order` analysis named `flow`,
+and `axial_alignment`, S_dir against the drum's axis, of one named `axial` (docs/mixing.md,
+"Orientation order"). Writes OUT_DIR/aspect_ratio_study.csv with the same columns and, in
+--figures (default OUT_DIR), drum_aspect_ratio_lacey.png (M against time, one line per sigma),
+drum_aspect_ratio_rates.png (the rate and the two energies against sigma) and
+drum_aspect_ratio_orientation.png (the three orientation figures against sigma).
 
 Needs matplotlib and numpy (Debian: python3-matplotlib, python3-numpy for /usr/bin/python3).
 Exit codes: 0 success, 2 bad input (a folder without run.json or series.csv, or no rows).
@@ -18,10 +23,17 @@ Exit codes: 0 success, 2 bad input (a folder without run.json or series.csv, or 
 import argparse
 import csv
 import json
+import math
 import sys
 from pathlib import Path
 
 EXIT_BAD_INPUT = 2
+
+
+def mean_of_finite(rows, key):
+    """The mean of the finite values of column `key` in rows; NaN when there are none."""
+    values = [float(r[key]) for r in rows if key in r and math.isfinite(float(r[key]))]
+    return sum(values) / len(values) if values else math.nan
 
 
 def read_run(folder, start):
@@ -39,6 +51,11 @@ def read_run(folder, start):
         raise ValueError(f"{folder}: no sample at t >= {start} s")
     mean = lambda key: sum(float(r[key]) for r in late) / len(late) / count
     figures = run["figures"]
+    orientation = {
+        "flow_alignment [-]": "flow.alignment [-]",
+        "nematic_order [-]": "flow.nematic_order [-]",
+        "axial_alignment [-]": "axial.alignment [-]",
+    }
     return {
         "sigma": sigma,
         "grains": count,
@@ -49,6 +66,7 @@ def read_run(folder, start):
         "rotational_energy_per_grain [J]": mean("rotational_energy [J]"),
         "rotational_share [-]": mean("rotational_energy [J]")
         / (mean("kinetic_energy [J]") + mean("rotational_energy [J]")),
+        **{name: mean_of_finite(late, key) for name, key in orientation.items()},
         "_times": times,
         "_lacey": lacey,
     }
@@ -106,6 +124,22 @@ def plot(rows, figures, start):
         a.grid(alpha=0.3, which="both")
     fig.tight_layout()
     fig.savefig(figures / "drum_aspect_ratio_rates.png", dpi=120)
+
+    fig, ax = plt.subplots(figsize=(6, 4))
+    for key, style, label in (
+        ("flow_alignment [-]", "o-", "S_dir against the motion"),
+        ("nematic_order [-]", "s--", "nematic order S"),
+        ("axial_alignment [-]", "^:", "S_dir against the drum axis"),
+    ):
+        ax.plot(sigmas, [r[key] for r in rows], style, label=label)
+    ax.axhline(0.0, color="grey", linewidth=0.8)
+    ax.set_xlabel("aspect ratio sigma = c / a (long axis; symmetry axis when oblate)")
+    ax.set_ylabel(f"mean over t >= {start:g} s [-]")
+    ax.set_xscale("log")
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3, which="both")
+    fig.tight_layout()
+    fig.savefig(figures / "drum_aspect_ratio_orientation.png", dpi=120)
 
 
 def main():
