@@ -302,8 +302,6 @@ void DemSolver::compute_loads(double dt) {
     overflow = !wall_loads(i, dt, failures) || overflow;
   }
   contact_failures_ += failures;
-  if (pairs_known_apart_ && pairs_->blocks() > 1 && !pairs_->balanced())
-    pairs_->balance(pairs_->blocks());
   if (overflow) {
     throw RunError(
         fmt::format("a grain touches more than {} wall faces at once (the slots of its "

@@ -46,7 +46,6 @@ void PairList::build(const CellGrid& grid, std::span<const Vec3> positions,
   built_at_.assign(positions.begin(), positions.end());
   travel_.assign(positions.size(), 0.0);
   block_start_.clear();
-  balanced_ = false;
 }
 
 // One pass over the grid: each thread lists the partners of a run of grains in its own buffer
@@ -155,45 +154,19 @@ void PairList::set_apart(std::size_t k) {
   touching_[k] = 0;
 }
 
-// `blocks`, at least 1 and at most one per grain.
-std::size_t PairList::block_count(int blocks) const {
-  return std::clamp<std::size_t>(static_cast<std::size_t>(blocks), 1,
-                                 std::max<std::size_t>(start_.size() - 1, 1));
-}
-
 void PairList::partition(int blocks) {
-  const std::size_t count = block_count(blocks);
+  const std::size_t grains = start_.size() - 1;
+  const std::size_t count = std::clamp<std::size_t>(static_cast<std::size_t>(blocks), 1,
+                                                    std::max<std::size_t>(grains, 1));
   if (block_start_.size() == count + 1)
     return;
-  cost_before_.assign(start_.begin(), start_.end());
-  cut_blocks(count);
-}
-
-void PairList::balance(int blocks) {
-  const std::size_t grains = start_.size() - 1;
-  balanced_ = true;
-  cost_before_.resize(grains + 1);
-  cost_before_[0] = 0.0;
-  for (std::size_t i = 0; i < grains; ++i) {
-    double cost = 0.0;
-    for (std::uint32_t k = start_[i]; k < start_[i + 1]; ++k)
-      cost += known_apart(k) ? 1.0 : kLiveCost;
-    cost_before_[i + 1] = cost_before_[i] + cost;
-  }
-  cut_blocks(block_count(blocks));
-}
-
-// Block b starts at the first grain whose cost before it reaches b / count of the whole
-// (cost_before_), and the grains reached from another block's pair are marked gathered.
-void PairList::cut_blocks(std::size_t count) {
-  const std::size_t grains = start_.size() - 1;
   block_start_.assign(count + 1, static_cast<std::uint32_t>(grains));
   block_start_[0] = 0;
   for (std::size_t b = 1; b < count; ++b) {
-    const double share = cost_before_.back() * static_cast<double>(b) / static_cast<double>(count);
-    const auto at = std::lower_bound(cost_before_.begin(), cost_before_.end() - 1, share);
+    const std::size_t share = first_.size() * b / count;
+    const auto at = std::lower_bound(start_.begin(), start_.end() - 1, share);
     block_start_[b] =
-        std::max(block_start_[b - 1], static_cast<std::uint32_t>(at - cost_before_.begin()));
+        std::max(block_start_[b - 1], static_cast<std::uint32_t>(at - start_.begin()));
   }
   gathered_.assign(grains, 0);
   for (std::size_t b = 0; b < count; ++b) {

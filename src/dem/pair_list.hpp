@@ -90,12 +90,6 @@ class PairList {
   // grain that is the second of a pair of another block. Does nothing when neither the list nor
   // the number has changed since the last call.
   void partition(int blocks);
-  // The same split into `blocks` runs, now of about equal cost, a pair known apart costing
-  // 1 / kLiveCost of one that is not: called once the list's pairs have been looked at, since a
-  // split by numbers of pairs gives one block more of the pairs that cost (7% more in the
-  // spheroid drum: the dense bed and the grains above it). Once per list (balanced()).
-  void balance(int blocks);
-  bool balanced() const { return balanced_; }
   int blocks() const { return static_cast<int>(block_start_.size()) - 1; }
   // Block b's grains [block_start(b), block_start(b + 1)) and the pairs they are first of,
   // [pair_start(block_start(b)), pair_start(block_start(b + 1))).
@@ -150,9 +144,6 @@ class PairList {
   double skin_;
   // Taken off every gap: far above the round-off of positions and travels over a list's life.
   double gap_margin_;
-  static constexpr double kLiveCost = 30.0;
-  std::size_t block_count(int blocks) const;
-  void cut_blocks(std::size_t count);
   // Pairs (first_[k], second_[k]), first < second, sorted by first then second; the pairs of
   // grain i as first are [start_[i], start_[i + 1]).
   std::vector<std::uint32_t> first_;
@@ -168,8 +159,6 @@ class PairList {
   std::vector<double> travel_;     // per grain, since the last build
   std::vector<std::uint32_t> block_start_;  // grains; empty: to be partitioned
   std::vector<std::uint8_t> gathered_;
-  std::vector<double> cost_before_;  // per grain: the cost of the pairs of the grains before it
-  bool balanced_ = false;
   std::vector<Vec3> built_at_;  // positions at the last build
   // The list before the last build (its springs move to the new one), kept to reuse memory.
   std::vector<std::uint32_t> old_first_;

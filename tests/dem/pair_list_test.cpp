@@ -236,42 +236,5 @@ TEST(PairList, BlocksShareThePairsEvenly) {
   EXPECT_EQ(list.blocks(), static_cast<int>(bed.x.size()));
 }
 
-// Pairs known apart cost little: once they are known, balance() splits the grains so that the
-// blocks share the pairs that cost (a pair not known apart counting 30 times one known apart),
-// where the split by numbers of pairs gave one block nearly all of them; the loads are still
-// each grain's in partner order, the same to the last bit as with one block.
-TEST(PairList, BalancedBlocksShareThePairsThatCost) {
-  const Bed bed = random_bed();
-  Listed listed_bed(bed);
-  PairList& list = listed_bed.list;
-  const std::size_t n = bed.x.size();
-  for (std::size_t k = 0; k < list.size(); ++k) {
-    if (list.first(k) < n / 2)
-      list.set_gap(k, 1.0);  // the first half's pairs are known apart
-  }
-  const auto cost = [&](int b) {
-    double sum = 0.0;
-    for (std::size_t k = list.pair_start(list.block_start(b));
-         k < list.pair_start(list.block_start(b + 1)); ++k)
-      sum += list.known_apart(k) ? 1.0 : 30.0;
-    return sum;
-  };
-  list.partition(2);
-  EXPECT_GT(cost(1), 10.0 * cost(0));  // by numbers of pairs
-  int gathered = 0;
-  const Loads one_block = delivered(list, n, 1, gathered);
-  list.partition(2);
-  list.balance(2);
-  EXPECT_TRUE(list.balanced());
-  ASSERT_EQ(list.blocks(), 2);
-  EXPECT_NEAR(cost(0), cost(1), 0.05 * (cost(0) + cost(1)));
-  const Loads two_blocks = delivered(list, n, 2, gathered);
-  EXPECT_GT(gathered, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    ASSERT_EQ(two_blocks.force[i], one_block.force[i]) << "grain " << i;
-    ASSERT_EQ(two_blocks.torque[i], one_block.torque[i]) << "grain " << i;
-  }
-}
-
 }  // namespace
 }  // namespace partimix::dem
