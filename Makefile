@@ -53,9 +53,9 @@ fuzz-regressions: fuzz-build
 
 # One process per benchmark family: the peak resident set per particle is that of the process.
 bench: build
-	for family in dam_break_3d planetary_mixer_cmc drum_10k drum_ellipsoids_10k drum_100k mpm_2d_10k mpm_2d_100k mpm_3d_10k mpm_3d_100k checkpoint_write checkpoint_read; do \
+	for family in dam_break_3d planetary_mixer_cmc drum_10k drum_ellipsoids_10k drum_100k ellipsoid_contact_warm mpm_2d_10k mpm_2d_100k mpm_3d_10k mpm_3d_100k checkpoint_write checkpoint_read; do \
 	  ./$(BUILD_DIR)/bench/partimix_bench --benchmark_counters_tabular=true \
-	    --benchmark_filter="^$$family/" || exit 1; \
+	    --benchmark_filter="^$$family(/|$$)" || exit 1; \
 	done
 
 format:
