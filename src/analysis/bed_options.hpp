@@ -69,11 +69,15 @@ struct HeightLine {
 
 // orientation_order: the reference direction e of the alignment: the unit `direction`, or, when
 // `velocity`, each grain's own direction of motion (grains not faster than `min_speed` are left
-// out of the alignment).
+// out of the alignment), relative to a frame turning at `frame_angular_velocity` about
+// `frame_point` when `rotating_frame` (a drum: then the flowing layer alone moves).
 struct OrientationReference {
   bool velocity = true;
   Vec3 direction = Vec3::UnitX();
   double min_speed = 0.0;  // [m/s]
+  bool rotating_frame = false;
+  Vec3 frame_point = Vec3::Zero();
+  Vec3 frame_angular_velocity = Vec3::Zero();  // [rad/s]
 };
 
 }  // namespace partimix::analysis

@@ -51,12 +51,26 @@ int grain_axis(const Vec3& half_axes) {
   return longest >= 0 ? longest : only(half_axes, half_axes.minCoeff());
 }
 
+// Grain i's velocity, relative to the rotating frame when there is one: v - omega x (x - p).
+Vec3 OrientationOrder::velocity_of(const ParticleStore& particles, std::size_t i) const {
+  const Vec3& velocity = particles.velocity()[i];
+  if (!reference_.rotating_frame)
+    return velocity;
+  const Vec3 arm = particles.position()[i] - reference_.frame_point;
+  return velocity - reference_.frame_angular_velocity.cross(arm);
+}
+
 OrientationOrder::OrientationOrder(const OrientationReference& reference)
     : reference_(reference), alignment_(kNaN), nematic_order_(kNaN) {
   if (!reference.velocity && !(reference.direction.norm() > 0.0))
     throw std::invalid_argument("orientation_order: the direction must not be zero");
   if (!(reference.min_speed >= 0.0))
     throw std::invalid_argument("orientation_order: min_speed must not be negative");
+  if (reference.rotating_frame && !(reference.velocity && reference.frame_point.allFinite() &&
+                                    reference.frame_angular_velocity.allFinite())) {
+    throw std::invalid_argument(
+        "orientation_order: a rotating frame needs the velocity as reference and finite values");
+  }
   reference_.direction.normalize();
 }
 
@@ -77,7 +91,7 @@ void OrientationOrder::sample(const ParticleStore& particles, double /*time*/,
     const Vec3 u = q.toRotationMatrix().col(axis);
     sum_uu += u * u.transpose();
     with_axis += 1.0;
-    const Vec3& velocity = particles.velocity()[i];
+    const Vec3 velocity = velocity_of(particles, i);
     const double speed = velocity.norm();
     if (reference_.velocity && !(speed > reference_.min_speed && speed > 0.0))
       continue;

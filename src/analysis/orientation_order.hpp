@@ -31,6 +31,8 @@ class OrientationOrder final : public Analysis {
   void add_figures(Figures& figures) const override;
 
  private:
+  Vec3 velocity_of(const ParticleStore& particles, std::size_t i) const;
+
   OrientationReference reference_;
   double alignment_;
   double nematic_order_;

@@ -4,6 +4,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <stdexcept>
 
@@ -228,8 +229,25 @@ void read_height_profile(Reader& item, AnalysisSpec& analysis, int dimensions) {
   check_bins(item, line.bins);
 }
 
+// orientation_order's rotating_frame: {axis_point, axis, rpm}, a frame turning as a drum does
+// (the right-hand rule about the axis for rpm > 0); velocities are taken relative to it.
+void read_rotating_frame(Reader& item, analysis::OrientationReference& reference, int dimensions) {
+  Reader frame = item.map("rotating_frame");
+  reference.frame_point = frame.vector("axis_point", dimensions);
+  const Vec3 axis = frame.vector("axis", 3);
+  if (!(axis.norm() > 0.0) || !axis.allFinite())
+    throw frame.error("axis", "expected a direction (3 numbers, not all zero)");
+  const double rpm = frame.required<double>("rpm");
+  if (!std::isfinite(rpm))
+    throw frame.error("rpm", "expected a finite number");
+  frame.done();
+  reference.rotating_frame = true;
+  reference.frame_angular_velocity = (2.0 * std::numbers::pi * rpm / 60.0) * axis.normalized();
+}
+
 // orientation_order: the reference direction (the word velocity, the default, or a direction)
-// and, with the velocity, min_speed. Refused for a method without grains that have an axis.
+// and, with the velocity, min_speed and rotating_frame. Refused for a method without grains that
+// have an axis.
 void read_orientation_order(Reader& item, AnalysisSpec& analysis, int dimensions,
                             const MethodSection& section) {
   if (!section.has_grain_axes()) {
@@ -247,6 +265,8 @@ void read_orientation_order(Reader& item, AnalysisSpec& analysis, int dimensions
   }
   if (reference.velocity) {
     reference.min_speed = item.optional<double>("min_speed", 0.0, kNonNegative);
+    if (item.contains("rotating_frame"))
+      read_rotating_frame(item, reference, dimensions);
     return;
   }
   const std::string expected = fmt::format(
@@ -258,8 +278,10 @@ void read_orientation_order(Reader& item, AnalysisSpec& analysis, int dimensions
   }
   if (!(reference.direction.norm() > 0.0))
     throw item.error("direction", expected);
-  if (item.contains("min_speed"))
-    throw item.error("min_speed", "applies with direction: velocity only");
+  for (const char* key : {"min_speed", "rotating_frame"}) {
+    if (item.contains(key))
+      throw item.error(key, "applies with direction: velocity only");
+  }
   reference.direction.normalize();
 }
 

@@ -10,7 +10,8 @@
 //   N: over 2000 draws of N grains (N = 100 to 10000) its mean is 0.80/sqrt(N) and its largest
 //   1.97/sqrt(N) (Monte Carlo); asserted 0 < S < 3/sqrt(N);
 // - the velocity as reference: grains moving along or across their axis; grains not faster
-//   than min_speed count in S but not in S_dir;
+//   than min_speed count in S but not in S_dir; in a rotating frame, grains turning with it are
+//   at rest (S_dir of the flowing grains alone: -1/2, 1e-12);
 // - spheres and walls count nowhere; no grain gives NaN; missing fields are a RunError.
 #include "analysis/orientation_order.hpp"
 
@@ -59,8 +60,8 @@ class Grains {
 
   // A grain of `half_axes` turned by q, moving at `velocity`.
   void add(const Vec3& half_axes, const Eigen::Quaterniond& q, const Vec3& velocity = Vec3::Zero(),
-           ParticleKind kind = ParticleKind::grain) {
-    const std::size_t i = add_particle(store_, kind, Vec3::Zero());
+           ParticleKind kind = ParticleKind::grain, const Vec3& position = Vec3::Zero()) {
+    const std::size_t i = add_particle(store_, kind, position);
     w_.values[i] = q.w();
     v_.values[i] = q.vec();
     axes_.values[i] = half_axes;
@@ -70,12 +71,12 @@ class Grains {
   // A grain of `half_axes` whose axis points along `direction` (either way, turned at random
   // about it).
   void add_along(const Vec3& half_axes, const Vec3& direction, Uniform& uniform,
-                 const Vec3& velocity = Vec3::Zero()) {
+                 const Vec3& velocity = Vec3::Zero(), const Vec3& position = Vec3::Zero()) {
     const Vec3 body_axis = Vec3::Unit(grain_axis(half_axes));
     const double sign = uniform() < 0.5 ? -1.0 : 1.0;
     const Eigen::Quaterniond onto = Eigen::Quaterniond::FromTwoVectors(body_axis, sign * direction);
     const Eigen::AngleAxisd twist(2.0 * kPi * uniform(), direction.normalized());
-    add(half_axes, Eigen::Quaterniond(twist) * onto, velocity);
+    add(half_axes, Eigen::Quaterniond(twist) * onto, velocity, ParticleKind::grain, position);
   }
 
   const ParticleStore& store() const { return store_; }
@@ -185,6 +186,32 @@ TEST(OrientationOrder, VelocityAsTheReference) {
   EXPECT_NEAR(values[1], 0.25, 1e-12);
 }
 
+TEST(OrientationOrder, ARotatingFrameLeavesOutTheBedThatTurnsWithIt) {
+  // A drum turning at omega about z through p: 10 grains turn with it (velocity omega x (x - p),
+  // axis along it), 10 flow through it (velocity omega x (x - p) + 0.2 m/s along x, axis along
+  // y). In the frame the turning grains are at rest and the flowing ones move along x, across
+  // their axes: S_dir = -1/2 from the flowing grains alone. In the lab frame the turning grains
+  // count along their motion: S_dir is above 0.
+  Uniform uniform(9);
+  const Vec3 point(0.1, -0.2, 0.0);
+  const Vec3 omega(0.0, 0.0, kPi);
+  Grains drum;
+  for (int k = 0; k < 10; ++k) {
+    const Vec3 x = point + 0.05 * Vec3(std::cos(0.6 * k), std::sin(0.6 * k), 0.01 * k);
+    const Vec3 turning = omega.cross(x - point);
+    drum.add_along(kProlateZ, turning.normalized(), uniform, turning, x);
+    drum.add_along(kProlateZ, Vec3::UnitY(), uniform, turning + Vec3(0.2, 0.0, 0.0), x);
+  }
+  OrientationReference frame{true, Vec3::UnitX(), 0.01};
+  frame.rotating_frame = true;
+  frame.frame_point = point;
+  frame.frame_angular_velocity = omega;
+  OrientationOrder relative(frame);
+  EXPECT_NEAR(sample_once(relative, drum.store(), 0.0)[0], -0.5, 1e-12);
+  OrientationOrder lab(OrientationReference{true, Vec3::UnitX(), 0.01});
+  EXPECT_GT(sample_once(lab, drum.store(), 0.0)[0], 0.2);
+}
+
 TEST(OrientationOrder, SpheresAndWallsCountNowhere) {
   Uniform uniform(6);
   Grains grains;
@@ -228,6 +255,9 @@ TEST(OrientationOrder, BadReferencesAreRefused) {
   EXPECT_THROW(OrientationOrder(along(Vec3::Zero())), std::invalid_argument);
   EXPECT_THROW(OrientationOrder(OrientationReference{true, Vec3::UnitX(), -1.0}),
                std::invalid_argument);
+  OrientationReference fixed_in_a_frame = along(kDirection);
+  fixed_in_a_frame.rotating_frame = true;
+  EXPECT_THROW(OrientationOrder{fixed_in_a_frame}, std::invalid_argument);
 }
 
 TEST(OrientationOrder, RegisteredByNameWithFiguresAndReplay) {

@@ -1,10 +1,11 @@
 // The analysis orientation_order (docs/case-reference.md, "analyses"): the reference direction
-// is the grains' velocity by default or a direction (normalised), with min_speed for the
-// velocity only; a method without grains that have an axis (spheres only) is refused at the
-// analysis' type, with file and line.
+// is the grains' velocity by default or a direction (normalised), with min_speed and a rotating
+// frame {axis_point, axis, rpm} for the velocity only; a method without grains that have an axis
+// (spheres only) is refused at the analysis' type, with file and line.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <numbers>
 #include <string>
 
 #include "case_files.hpp"
@@ -32,6 +33,7 @@ analyses:
 )" + items;
 }
 constexpr int kFirstItem = 12;
+constexpr double kPi = std::numbers::pi;
 const std::string kProlate = ", shape: {half_axes: [0.001, 0.001, 0.003]}";
 
 const analysis::OrientationReference& reference_of(const io::Case& loaded) {
@@ -56,6 +58,18 @@ TEST(CaseOrientationOrder, ADirectionIsNormalised) {
       load_text(dem_case(kProlate, "  - {type: orientation_order, direction: [0, 3, 4]}\n"));
   EXPECT_FALSE(reference_of(loaded).velocity);
   EXPECT_EQ(reference_of(loaded).direction, Vec3(0.0, 0.6, 0.8));
+}
+
+TEST(CaseOrientationOrder, ARotatingFrameTurnsAtItsRpm) {
+  const io::Case loaded =
+      load_text(dem_case(kProlate,
+                         "  - type: orientation_order\n    rotating_frame: {axis_point: [0, 1, 0], "
+                         "axis: [0, 0, 2], rpm: 30}\n"));
+  EXPECT_TRUE(reference_of(loaded).rotating_frame);
+  EXPECT_EQ(reference_of(loaded).frame_point, Vec3(0.0, 1.0, 0.0));
+  EXPECT_LT((reference_of(loaded).frame_angular_velocity - Vec3(0.0, 0.0, kPi)).norm(), 1e-15);
+  EXPECT_FALSE(
+      reference_of(load_text(dem_case(kProlate, "  - type: orientation_order\n"))).rotating_frame);
 }
 
 TEST(CaseOrientationOrder, SpheresAloneAreRefusedAtTheType) {
@@ -101,6 +115,16 @@ TEST(CaseOrientationOrder, BadReferencesAreLocated) {
                kFirstItem + 2, 16, "analyses[0].min_speed", "applies with direction: velocity"},
            Bad{"  - type: orientation_order\n    min_speed: -1\n", kFirstItem + 1, 16,
                "analyses[0].min_speed", ""},
+           Bad{"  - type: orientation_order\n    direction: [1, 0, 0]\n    rotating_frame: "
+               "{axis_point: [0, 0, 0], axis: [0, 0, 1], rpm: 30}\n",
+               kFirstItem + 2, 21, "analyses[0].rotating_frame",
+               "applies with direction: velocity"},
+           Bad{"  - type: orientation_order\n    rotating_frame: {axis_point: [0, 0, 0], axis: [0, "
+               "0, 0], rpm: 30}\n",
+               kFirstItem + 1, 51, "analyses[0].rotating_frame.axis", "expected a direction"},
+           Bad{"  - type: orientation_order\n    rotating_frame: {axis_point: [0, 0, 0], axis: [0, "
+               "0, 1]}\n",
+               kFirstItem + 1, 21, "analyses[0].rotating_frame.rpm", ""},
        }) {
     const InputError error = load_error(dem_case(kProlate, bad.item));
     expect_location(error, "case.yaml", bad.line, bad.column, bad.key);
