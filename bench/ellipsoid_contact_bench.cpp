@@ -32,12 +32,12 @@ Mat3 random_rotation(std::mt19937_64& rng) {
       .toRotationMatrix();
 }
 
-// Grain j along u from grain i at the distance where they just touch (bisection), less an
-// overlap.
+// Grain j along u from grain i at the distance where they just touch (bisection between the
+// centres together and twice the sum of the long half-axes, surely apart), less an overlap.
 Ellipsoid touching_partner(const Ellipsoid& i, const Vec3& u, const Mat3& rotation,
                            double overlap) {
   double lo = 0.0;
-  double hi = 2.0 * (kHalfAxes.maxCoeff() + kHalfAxes.maxCoeff());
+  double hi = 4.0 * kHalfAxes.maxCoeff();
   for (int n = 0; n < 60; ++n) {
     const double mid = 0.5 * (lo + hi);
     const Ellipsoid j = make_ellipsoid(i.centre + mid * u, rotation, kHalfAxes);

@@ -12,8 +12,9 @@ the drum turning rigidly, v_rel = v - omega x (x - p) with omega = 2 pi rpm / 60
 axis: the grains with |v_rel| > --min-speed are the flowing layer. For them it prints, per
 frame and over all frames together, their number and
     S_dir = <P2(u . v_rel / |v_rel|)>  and  S = largest eigenvalue of <(3 u u^T - I) / 2>,
-u the grain's axis (the longest half-axis, or the shortest for oblate grains), as the analysis
-defines them (docs/dem.md, "The study drum at the seed's own size").
+u the grain's axis (the longest half-axis, or the shortest for oblate grains): S_dir as the
+analysis defines it with its `rotating_frame`, S over the flowing grains alone (the analysis
+counts every grain in S; docs/mixing.md, "Orientation order").
 
 Needs numpy. Exit codes: 0 success, 2 bad input (a file that is not such a frame, or no grain
 with an axis above the speed).
