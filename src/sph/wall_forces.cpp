@@ -1,6 +1,7 @@
 #include "sph/wall_forces.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 
 #include <Eigen/Geometry>
@@ -9,8 +10,23 @@
 
 namespace partimix::sph {
 
+namespace {
+
+// The pair term m_w (T_i / rho_i^2 + T_w / rho_w^2) grad_i W_iw with T_i = T_w = eta_i [omega x]^T,
+// [omega x]^T g = -omega x g: the acceleration of fluid particle i.
+Vec3 rigid_wall_traction(const PairCentre& i, std::size_t w, const Vec3& grad, const Fields& f) {
+  const double rho_w = f.density[w];
+  const double factor =
+      f.mass[w] * i.viscosity * (1.0 / (i.density * i.density) + 1.0 / (rho_w * rho_w));
+  return -factor * (*f.angular_velocity)[w].cross(grad);
+}
+
+}  // namespace
+
 void compute_wall_forces(const Fields& f, std::size_t fluid_count, const CellGrid& grid,
-                         const KernelTable& kernel, const Parameters& p, WallLoads loads) {
+                         const KernelTable& kernel, const Parameters& p, WallTraction traction,
+                         WallLoads loads) {
+  const bool rigid = traction == WallTraction::rigid_wall && f.angular_velocity != nullptr;
   const auto fluid_end = static_cast<std::ptrdiff_t>(fluid_count);
   std::fill(loads.force.begin(), loads.force.begin() + fluid_end, Vec3::Zero());
   std::fill(loads.couple.begin(), loads.couple.begin() + fluid_end, Vec3::Zero());
@@ -22,8 +38,13 @@ void compute_wall_forces(const Fields& f, std::size_t fluid_count, const CellGri
     Vec3 force = Vec3::Zero();
     Vec3 couple = Vec3::Zero();
     auto gather = [&](std::size_t i, const Vec3& r_wi, double r2) {
-      const PairRates pair = pair_rates(pair_centre(i, f, p), w, -r_wi, r2, f, kernel, p);
-      const Vec3 f_iw = -f.mass[i] * pair.acceleration;
+      const PairCentre centre = pair_centre(i, f, p);
+      Vec3 acceleration = pair_rates(centre, w, -r_wi, r2, f, kernel, p).acceleration;
+      if (rigid) {
+        const double r = std::sqrt(r2);
+        acceleration += rigid_wall_traction(centre, w, (kernel.derivative(r) / r) * -r_wi, f);
+      }
+      const Vec3 f_iw = -f.mass[i] * acceleration;
       force += f_iw;
       couple += (-0.5 * r_wi).cross(f_iw);
     };

@@ -19,11 +19,20 @@ struct WallLoads {
   std::vector<Vec3>& couple;  // c_j [N m]
 };
 
+// What a wall particle's loads add to the pair terms of the dynamics.
+enum class WallTraction {
+  dynamics,  // nothing: the reaction to the dynamics' own terms (the stress form)
+  // The traction eta G^T . n that the Morris operator leaves out, in its exact value at a rigid
+  // no-slip wall, eta n x omega (docs/power.md, "Viscous traction"), through the stress-form pair
+  // term with T = eta_i [omega x]^T on both sides: zero on a wall that does not turn.
+  rigid_wall,
+};
+
 // Needs the state of one rate evaluation (pressures, wall state, viscosities and, stress form,
 // viscous stresses). Fluid particles are [0, fluid_count) of the fields; `loads` get one entry
 // per particle, zero for fluid particles.
 void compute_wall_forces(const Fields& fields, std::size_t fluid_count, const CellGrid& grid,
                          const KernelTable& gradient_kernel, const Parameters& parameters,
-                         WallLoads loads);
+                         WallTraction traction, WallLoads loads);
 
 }  // namespace partimix::sph

@@ -127,18 +127,15 @@ WcsphSolver::WcsphSolver(ParticleStore& store, const Domain& domain, const Confi
 // The grid and the rate-evaluation state are those of the end of the last step (or of the
 // constructor), so the forces belong to the current positions. The traction on a wall is
 // tau . n with tau = eta (G + G^T); the Morris term carries only the eta G part to the walls, so
-// with it the eta G^T part is computed here and added as in the stress form (docs/power.md).
+// with it the loads add the eta G^T part at its exact value on a rigid wall (docs/power.md,
+// "Viscous traction").
 void WcsphSolver::update_body_forces() {
   if (body_force_ == nullptr)
     return;
-  Parameters traction = parameters_;
-  if (parameters_.viscous_operator == ViscousOperator::morris) {
-    fields_.viscous_stress.resize(store_.size());
-    compute_viscous_stress(fields_, fluid_count_, grid_, gradient_table_, kernel_table_, rheology_,
-                           domain_.dimensions, config_.corrected_velocity_gradient);
-    traction.viscous_operator = ViscousOperator::stress;
-  }
-  compute_wall_forces(fields_, fluid_count_, grid_, gradient_table_, traction,
+  const WallTraction traction = parameters_.viscous_operator == ViscousOperator::morris
+                                    ? WallTraction::rigid_wall
+                                    : WallTraction::dynamics;
+  compute_wall_forces(fields_, fluid_count_, grid_, gradient_table_, parameters_, traction,
                       {*body_force_, *body_couple_});
 }
 

@@ -15,7 +15,7 @@ double tangential_rms_error(const ParticleStore& store, AngularVelocity&& omega)
     if (!store.is_fluid(i))
       continue;
     const Vec3& x = store.position()[i];
-    const double r = x.norm();
+    const double r = std::hypot(x.x(), x.y());
     const Vec3 tangent(-x.y() / r, x.x() / r, 0.0);
     const double error = store.velocity()[i].dot(tangent) - r * omega(r);
     sum += error * error;

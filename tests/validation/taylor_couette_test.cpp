@@ -20,9 +20,12 @@
 // within 3% of C (+2.5%), torques within 5% (inner +0.09%, outer -0.60%). The Morris form alone
 // is at 5.2% L2; the test checks it is at least twice as far off. Newtonian, mu = 10 Pa s:
 // stress form L2 < 2% (0.75%), torques within 4% (-2.2%, -2.8%); Morris L2 < 1% (0.29%), outer
-// torque within 3% (+0.85%), inner within 8% (-7.1%): the inner error is first order in dp / R1
-// (-3.9% at gap / dp = 20, outer -0.3%), from the wall's curvature at R1 / dp = 10; the last test
-// asserts that halving dp cuts it to less than 0.65 of itself.
+// torque within 3% (-2.2%), inner within 2% (-0.87%). With the Morris operator the loads add the
+// traction eta G^T . n at its exact value on a rigid wall, eta n x omega (docs/power.md, "Viscous
+// traction"): 3/8 of the inner torque here, nothing on the outer wall at rest. (Estimated from
+// the fluid's stresses near the wall before, it made the inner torque -7.1% and the outer
+// +0.85%.) The last test halves dp: the inner torque stays within 2% (-0.84%) and the outer
+// error shrinks (-1.8%).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -178,17 +181,18 @@ TEST(TaylorCouette, NewtonianTorqueOnBothCylinders) {
   EXPECT_NEAR(stress_form.outer_torque_error, 0.0, 0.04);
   const Measured morris = run(newtonian, "morris");
   EXPECT_LT(morris.l2, 0.01);
-  EXPECT_NEAR(morris.inner_torque_error, 0.0, 0.08);
+  EXPECT_NEAR(morris.inner_torque_error, 0.0, 0.02);
   EXPECT_NEAR(morris.outer_torque_error, 0.0, 0.03);
 }
 
-TEST(TaylorCouette, NewtonianMorrisInnerTorqueErrorIsFirstOrderInTheSpacing) {
-  // The 8% above is a discretisation error, not a bias of the operator: halving dp must at
-  // least nearly halve it (first order: ratio 0.5; measured -7.1% -> -3.9%, ratio 0.55).
+TEST(TaylorCouette, NewtonianMorrisTorquesHoldWhenTheSpacingIsHalved) {
+  // The turning cylinder's torque stays within the issue's 2% at gap / dp = 20, and the error at
+  // the wall at rest (the Morris term's own, -2.2% at 10) falls.
   const Fluid newtonian{10.0, 1.0};
-  const double coarse = run(newtonian, "morris", kRings).inner_torque_error;
-  const double fine = run(newtonian, "morris", 2 * kRings).inner_torque_error;
-  EXPECT_LT(std::abs(fine), 0.65 * std::abs(coarse));
+  const Measured coarse = run(newtonian, "morris", kRings);
+  const Measured fine = run(newtonian, "morris", 2 * kRings);
+  EXPECT_NEAR(fine.inner_torque_error, 0.0, 0.02);
+  EXPECT_LT(std::abs(fine.outer_torque_error), std::abs(coarse.outer_torque_error));
 }
 
 }  // namespace
