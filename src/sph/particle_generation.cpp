@@ -9,6 +9,7 @@
 
 #include "geometry/lattice.hpp"
 #include "io/method_type.hpp"
+#include "sph/body_clearance.hpp"
 #include "sph/kernel.hpp"
 
 namespace partimix::sph {
@@ -43,20 +44,6 @@ double kernel_reach(const Config& config) {
   return support * config.smoothing_ratio;
 }
 
-// Whether `x` lies inside the solid wall or closer than half a spacing to its surface, where
-// the fluid must clear the body (docs/geometry-meshes.md, "Solid walls").
-// The bounding-box test first spares most fluid points the distance query (costly for a mesh).
-bool blocked_by(const io::WallSpec& wall, const Vec3& x, double spacing) {
-  if (!wall.solid)
-    return false;
-  const double clearance = 0.5 * spacing;
-  const Vec3 lo = wall.shape->lower().array() - clearance;
-  const Vec3 hi = wall.shape->upper().array() + clearance;
-  const bool near_box = (x.array() > lo.array()).all() && (x.array() < hi.array()).all();
-  // A point half a spacing from the surface (the lattice's own phase, up to round-off) is kept.
-  return near_box && wall.shape->signed_distance(x) < clearance * (1.0 - 1e-9);
-}
-
 // The lattice of the case (sph.lattice), with the case's limits for one that adds to the
 // `existing` particles of the store.
 geometry::LatticeOptions lattice_after(const io::Case& the_case, const Config& config,
@@ -75,9 +62,10 @@ std::vector<Vec3> located(const io::Case& the_case, const std::string& key, Samp
   }
 }
 
-// The fluid lattice points of region `r`, less those that a solid wall blocks.
+// The fluid lattice points of region `r`, less those that the solid bodies block.
 std::vector<Vec3> fluid_points(const io::Case& the_case, const Config& config,
-                               const FluidSpec& fluid, std::size_t r, std::size_t existing) {
+                               const FluidSpec& fluid, std::size_t r, std::size_t existing,
+                               const BodyClearance& clearance) {
   const double spacing = config.spacing;
   const std::string key = fmt::format("fluid.regions[{}]", r);
   std::vector<Vec3> points = located(the_case, key, [&] {
@@ -90,10 +78,7 @@ std::vector<Vec3> fluid_points(const io::Case& the_case, const Config& config,
                                      "region within the domain",
                                      spacing));
   }
-  std::erase_if(points, [&](const Vec3& x) {
-    return std::any_of(the_case.walls.begin(), the_case.walls.end(),
-                       [&](const io::WallSpec& wall) { return blocked_by(wall, x, spacing); });
-  });
+  std::erase_if(points, [&](const Vec3& x) { return clearance.blocks(x); });
   return points;
 }
 
@@ -171,14 +156,31 @@ int wall_layers_for(const Config& config) {
 void generate_particles(const io::Case& the_case, const SphSection& section,
                         io::MethodInstance& instance) {
   ParticleStore& store = *instance.store;
-  for (std::size_t r = 0; r < section.fluid.regions.size(); ++r)
-    append(store, fluid_points(the_case, section.config, section.fluid, r, store.size()),
-           ParticleKind::fluid);
+  // The solid bodies first: the fluid keeps clear of their particles.
+  std::vector<std::vector<Vec3>> bodies(the_case.walls.size());
+  BodyClearance clearance(the_case.domain, section.config.spacing);
+  std::size_t pending = 0;
+  for (std::size_t w = 0; w < the_case.walls.size(); ++w) {
+    if (!the_case.walls[w].solid)
+      continue;
+    bodies[w] = wall_points(the_case, section.config, w, pending);
+    clearance.add_body(*the_case.walls[w].shape, bodies[w]);
+    pending += bodies[w].size();
+  }
+  for (std::size_t r = 0; r < section.fluid.regions.size(); ++r) {
+    append(
+        store,
+        fluid_points(the_case, section.config, section.fluid, r, store.size() + pending, clearance),
+        ParticleKind::fluid);
+  }
   instance.bodies = std::make_unique<geometry::MovingBodies>(store, the_case.domain);
   for (std::size_t w = 0; w < the_case.walls.size(); ++w) {
     const io::WallSpec& wall = the_case.walls[w];
     const std::size_t first = store.size();
-    const std::vector<Vec3> points = wall_points(the_case, section.config, w, store.size());
+    pending -= bodies[w].size();
+    const std::vector<Vec3> points =
+        wall.solid ? std::move(bodies[w])
+                   : wall_points(the_case, section.config, w, store.size() + pending);
     if (auto reason = see_through(the_case, section.config, w, points)) {
       instance.warnings.push_back(fmt::format("{}: {}", the_case.file, *reason));
       instance.load_caveats[static_cast<int>(w)] = std::move(*reason);

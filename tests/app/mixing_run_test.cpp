@@ -24,10 +24,14 @@ using ::testing::Not;
 
 // The box [0, 0.2]^2 full of fluid (rho 1000, mu 1 Pa s) at spacing 0.01, lattice points at
 // 0.005 + 0.01 i; walls[1] is the plate [0.058, 0.142] x [0.088, 0.112] (d = 0.084 m) turning
-// about its centre (0.1, 0.1) at 300 rpm (N = 5 r/s, period 0.2 s) after a 0.05 s ramp. The
-// fluid within half a spacing of it is cleared: offsets (+-(0.005 + 0.01 a), +-(0.005 + 0.01 b))
-// from the centre with a <= 4, b <= 1, 10 points a quadrant, so 400 - 40 = 360 fluid particles.
-// The tracer is the fluid at y < 0.1: 180 particles.
+// about its centre (0.1, 0.1) at 300 rpm (N = 5 r/s, period 0.2 s) after a 0.05 s ramp. Its
+// particles lie on its own lattice, 0.063 + 0.01 i by 0.093 and 0.103, 0.002 off the fluid's
+// (docs/geometry-meshes.md, "Solid walls"): the fluid points inside it are cleared (x 0.065 to
+// 0.135 by y 0.095 and 0.105: 16) and those closer than a spacing to one of its particles (x
+// 0.055 by the same two rows, 0.0082 m from the nearest; x 0.065 to 0.135 at y 0.085, 0.0082 m;
+// 10), so 400 - 26 = 374 fluid particles; the rows and columns on the far sides, 0.012 m from the
+// nearest plate particle, stay. The tracer is the fluid at y < 0.1: 200 - 17 = 183 particles,
+// 191 above.
 const std::string kStirredBox = R"(name: stirred_box
 solver: sph
 dimensions: 2
@@ -128,9 +132,10 @@ TEST_F(MixingRun, SeriesHasTheLoadPowerAndMixingColumns) {
 TEST_F(MixingRun, FirstRowIsTheSegregatedStartAtRest) {
   // At t = 0 the ramp has the plate at rest: omega = 0, no rotation power. The disc of radius
   // 0.085 about (0.1, 0.1) holds 54 lattice points a quadrant ((a + 1/2)^2 + (b + 1/2)^2 <=
-  // 72.25 for b = 0..7: 8, 8, 8, 8, 7, 6, 5, 4), 44 of them fluid: 88 in each half disc, all
-  // tracers in the lower one. xi = 1/n = 0.5 (all tracers in one of n = 2 cells); Lacey with
-  // pure cells of nbar = 88: M = -nbar / ((C - 1)(nbar - 1)) = -88/87.
+  // 72.25 for b = 0..7: 8, 8, 8, 8, 7, 6, 5, 4), 108 a half, every cleared point among them:
+  // 91 fluid in the lower half (all the tracers), 99 in the upper. xi = 1/n = 0.5 (all tracers
+  // in one of n = 2 cells); Lacey with the pure cells phi = 1, 0 (S^2 = 1/2), p = 91/190 and
+  // nbar = 95: M = (S0^2 - 1/2) / (S0^2 (1 - 1/95)), S0^2 = p (1 - p).
   const Series series = read_series(out() / "series.csv");
   ASSERT_FALSE(series.rows.empty());
   const std::vector<double>& first = series.rows.front();
@@ -138,7 +143,9 @@ TEST_F(MixingRun, FirstRowIsTheSegregatedStartAtRest) {
   EXPECT_EQ(first[kPowerRotation], 0.0);
   EXPECT_EQ(first[kNp], 0.0);
   EXPECT_NEAR(first[kXi], 0.5, 1e-12);
-  EXPECT_NEAR(first[kLacey], -88.0 / 87.0, 1e-9);
+  const double p = 91.0 / 190.0;
+  const double s0 = p * (1.0 - p);
+  EXPECT_NEAR(first[kLacey], (s0 - 0.5) / (s0 * (1.0 - 1.0 / 95.0)), 1e-9);
 }
 
 TEST_F(MixingRun, FiguresAreMeansOverTheLastHalfRevolution) {
@@ -263,8 +270,8 @@ TEST_F(MixingRun, FramesTagHalfTheFluidAsTracer) {
       tracers += tag[i] == 1 ? 1 : 0;
       others += tag[i] == 0 ? 1 : 0;
     }
-    EXPECT_EQ(tracers, 180) << entry.file;
-    EXPECT_EQ(others, 180) << entry.file;
+    EXPECT_EQ(tracers, 183) << entry.file;
+    EXPECT_EQ(others, 191) << entry.file;
   }
 }
 

@@ -173,9 +173,12 @@ TEST(SolidWall, MeshCubeGivesTheParticlesOfTheEqualBox) {
   const auto walls = positions(*from_mesh.methods[0].store, false);
   EXPECT_EQ(walls.size(), 4u * 4u * 4u);
   EXPECT_EQ(walls, positions(*from_box.methods[0].store, false));
-  // The fluid lattice points at 0.01 + 0.02 i in [0.07, 0.15] on every axis are cleared.
+  // Of the fluid lattice points at 0.01 + 0.02 i, those in [0.07, 0.15] on every axis are
+  // cleared (inside the cube, or on a face at 0.15 within a spacing of a cube particle at 0.135,
+  // docs/geometry-meshes.md) but the 13 on the three edges and the corner where two or three
+  // coordinates are 0.15: 0.0218 m and 0.026 m from the nearest cube particle.
   const auto fluid = positions(*from_mesh.methods[0].store, true);
-  EXPECT_EQ(fluid.size(), 10u * 10u * 10u - 5u * 5u * 5u);
+  EXPECT_EQ(fluid.size(), 10u * 10u * 10u - 5u * 5u * 5u + 13u);
   EXPECT_EQ(fluid, positions(*from_box.methods[0].store, true));
 }
 
