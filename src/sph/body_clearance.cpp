@@ -1,5 +1,6 @@
 #include "sph/body_clearance.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace partimix::sph {
@@ -7,6 +8,7 @@ namespace {
 
 // Points exactly a spacing apart (two points of one lattice, up to round-off) are clear.
 constexpr double kClear = 1.0 - 1e-9;
+constexpr double kFar = 1e15;
 
 bool within_box(const geometry::Shape& shape, const Vec3& x) {
   return (x.array() >= shape.lower().array()).all() && (x.array() <= shape.upper().array()).all();
@@ -30,7 +32,9 @@ std::array<std::int64_t, 3> BodyClearance::cell_of(const Vec3& x) const {
   for (int axis = 0; axis < domain_.dimensions; ++axis) {
     const std::int64_t n = periodic_cells_[axis];
     const double size = n > 0 ? domain_.length()[axis] / static_cast<double>(n) : spacing_;
-    cell[axis] = static_cast<std::int64_t>(std::floor((x[axis] - domain_.lo[axis]) / size));
+    // Clamped so that any position converts: cells beyond share one index (and are measured).
+    const double c = std::clamp(std::floor((x[axis] - domain_.lo[axis]) / size), -kFar, kFar);
+    cell[axis] = static_cast<std::int64_t>(c);
     if (n > 0)
       cell[axis] = ((cell[axis] % n) + n) % n;
   }
@@ -44,7 +48,11 @@ std::int64_t BodyClearance::key(std::array<std::int64_t, 3> cell) const {
     if (n > 0)
       cell[axis] = ((cell[axis] % n) + n) % n;
   }
-  return (cell[0] * 73856093) ^ (cell[1] * 19349663) ^ (cell[2] * 83492791);
+  const auto mix = [](std::int64_t c, std::uint64_t factor) {
+    return static_cast<std::uint64_t>(c) * factor;  // unsigned: wraps, never overflows
+  };
+  return static_cast<std::int64_t>(mix(cell[0], 73856093U) ^ mix(cell[1], 19349663U) ^
+                                   mix(cell[2], 83492791U));
 }
 
 void BodyClearance::add_body(const geometry::Shape& shape, std::span<const Vec3> particles) {
@@ -75,12 +83,27 @@ bool BodyClearance::near_particle(const Vec3& x) const {
   return false;
 }
 
+// Most fluid points lie farther than a spacing from every body's bounding box: no search then.
 bool BodyClearance::blocks(const Vec3& x) const {
+  bool near_a_body = false;
   for (const geometry::Shape* shape : shapes_) {
     if (within_box(*shape, x) && shape->signed_distance(x) < 0.0)
       return true;
+    near_a_body = near_a_body || near_box(*shape, x);
   }
-  return near_particle(x);
+  return near_a_body && near_particle(x);
+}
+
+// Within a spacing of the shape's bounding box along every axis that is not periodic (along a
+// periodic one, a particle's image may come near from the other side).
+bool BodyClearance::near_box(const geometry::Shape& shape, const Vec3& x) const {
+  for (int axis = 0; axis < 3; ++axis) {
+    const bool outside =
+        x[axis] < shape.lower()[axis] - spacing_ || x[axis] > shape.upper()[axis] + spacing_;
+    if (outside && !domain_.periodic[axis])
+      return false;
+  }
+  return true;
 }
 
 }  // namespace partimix::sph

@@ -31,6 +31,7 @@ class BodyClearance {
  private:
   std::array<std::int64_t, 3> cell_of(const Vec3& x) const;
   std::int64_t key(std::array<std::int64_t, 3> cell) const;
+  bool near_box(const geometry::Shape& shape, const Vec3& x) const;
   bool near_particle(const Vec3& x) const;
 
   Domain domain_;
