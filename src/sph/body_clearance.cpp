@@ -34,14 +34,13 @@ std::array<std::int64_t, 3> BodyClearance::cell_of(const Vec3& x) const {
     const double size = n > 0 ? domain_.length()[axis] / static_cast<double>(n) : spacing_;
     // Clamped so that any position converts: cells beyond share one index (and are measured).
     const double c = std::clamp(std::floor((x[axis] - domain_.lo[axis]) / size), -kFar, kFar);
-    cell[axis] = static_cast<std::int64_t>(c);
-    if (n > 0)
-      cell[axis] = ((cell[axis] % n) + n) % n;
+    cell[axis] = static_cast<std::int64_t>(c);  // key() wraps it along a periodic axis
   }
   return cell;
 }
 
-// Cells that share a key share a bucket: more candidates to measure, never a missed one.
+// A cell's index wrapped along the periodic axes (so that cell_of(x) +- 1 finds the other side),
+// hashed: cells that share a key share a bucket, more candidates to measure, never a missed one.
 std::int64_t BodyClearance::key(std::array<std::int64_t, 3> cell) const {
   for (int axis = 0; axis < 3; ++axis) {
     const std::int64_t n = periodic_cells_[axis];

@@ -5,7 +5,9 @@
 // lattice and the body's surface lies between them, curved or not; a body laid on a lattice of
 // another phase keeps the fluid points that would come closer than a spacing to its particles
 // away. (A clearance of half a spacing from the surface left a band up to half a spacing wide
-// empty along a curved body: the loads on a turning cylinder came out 9% low.)
+// empty along a curved body: the loads on a turning cylinder came out 9% low.) The body
+// particles sit in a hash of cells a spacing wide: CellGrid lists the neighbours of its own
+// particles, and these queries are of other points.
 #include <array>
 #include <cstdint>
 #include <span>

@@ -46,6 +46,9 @@ struct NewtonianTaylorCouette {
   }
 };
 
+// The tests' set-up: R1 = 5 mm turning at 2 rad/s, R2 = 10 mm, mu = 10 Pa s, per unit length.
+inline constexpr NewtonianTaylorCouette kTaylorCouette{0.005, 0.01, 2.0, 10.0, 1.0};
+
 struct TaylorCouetteErrors {
   double l2;     // of v_theta, relative to Omega R1
   double inner;  // torque on the inner cylinder, relative

@@ -27,10 +27,6 @@
 namespace partimix {
 namespace {
 
-constexpr double kInner = 0.005;
-constexpr double kOuter = 0.01;
-constexpr double kOmega = 2.0;
-constexpr double kViscosity = 10.0;
 constexpr double kThickness = 0.005;
 
 // The case on rings (sph.lattice polar) or, without `lattice`, on the default Cartesian lattice.
@@ -66,7 +62,8 @@ TaylorCouetteErrors run_slab(const std::string& lattice) {
   EXPECT_EQ(run.summary.status, "completed") << run.summary.message;
   simulation.methods[0].solver->update_body_forces();
   const TaylorCouetteErrors e = taylor_couette_errors(
-      *simulation.methods[0].store, {kInner, kOuter, kOmega, kViscosity, kThickness});
+      *simulation.methods[0].store, {kTaylorCouette.inner, kTaylorCouette.outer,
+                                     kTaylorCouette.omega, kTaylorCouette.viscosity, kThickness});
   std::printf("Taylor-Couette 3D (%s): L2 %.4f, torque inner %+.4f outer %+.4f\n",
               lattice.empty() ? "Cartesian" : "rings", e.l2, e.inner, e.outer);
   return e;

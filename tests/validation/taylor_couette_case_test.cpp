@@ -20,11 +20,6 @@
 namespace partimix {
 namespace {
 
-constexpr double kInner = 0.005;
-constexpr double kOuter = 0.01;
-constexpr double kOmega = 2.0;
-constexpr double kViscosity = 10.0;
-
 const std::string kCase = R"(name: taylor_couette_2d
 solver: sph
 dimensions: 2
@@ -58,8 +53,7 @@ TEST(TaylorCouetteCase, TheCaseFileMatchesTheExactSolution) {
     return k == static_cast<std::int32_t>(ParticleKind::fluid);
   });
   simulation.methods[0].solver->update_body_forces();
-  const TaylorCouetteErrors e =
-      taylor_couette_errors(store, {kInner, kOuter, kOmega, kViscosity, 1.0});
+  const TaylorCouetteErrors e = taylor_couette_errors(store, kTaylorCouette);
   std::printf("Taylor-Couette case: %ld fluid particles, L2 %.4f, torque inner %+.4f outer %+.4f\n",
               static_cast<long>(fluid), e.l2, e.inner, e.outer);
   EXPECT_EQ(fluid, 943);  // sum over the ten rings of round(2 pi r / dp)
