@@ -48,7 +48,11 @@ class ParticleStore {
   // Finds a field by name; nullptr if absent.
   const Field<double>* find_scalar(const std::string& name) const;
   const Field<Vec3>* find_vector(const std::string& name) const;
-  // The same, writable: to set a method's field at set-up (an initial angular velocity).
+  // The same, writable: to set a method's field at set-up (an initial angular velocity, the
+  // density of a pressure field).
+  Field<double>* find_scalar(const std::string& name) {
+    return const_cast<Field<double>*>(std::as_const(*this).find_scalar(name));
+  }
   Field<Vec3>* find_vector(const std::string& name) {
     return const_cast<Field<Vec3>*>(std::as_const(*this).find_vector(name));
   }

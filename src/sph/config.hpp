@@ -21,6 +21,12 @@ struct DensityTreatment {
   int shepard_interval = 20;            // ... every N steps
 };
 
+// Particle shifting (docs/sph.md, "Particle shifting").
+struct Shifting {
+  std::string model = "none";  // none | fickian (Lind et al. 2012)
+  double coefficient = 4.0;    // A of D = A h U_max dt
+};
+
 struct Config {
   double spacing = 0.0;          // initial particle spacing dp [m]
   double smoothing_ratio = 1.5;  // h / dp (docs/sph.md, "Choice of h")
@@ -31,12 +37,14 @@ struct Config {
   std::optional<double> sound_speed;   // c0 [m/s]; when absent, mach_factor * max_velocity
   std::optional<double> max_velocity;  // [m/s]; when absent, 2 sqrt(|g| H) of the fluid
   double mach_factor = 10.0;
-  double artificial_viscosity = 0.0;          // Monaghan alpha; 0: off
-  bool laminar_viscosity = true;              // laminar viscous term with the fluid's viscosity
+  std::optional<double> flow_length;  // L [m] of the viscous criterion; absent: fluid's narrowest
+  double artificial_viscosity = 0.0;  // Monaghan alpha; 0: off
+  bool laminar_viscosity = true;      // laminar viscous term with the fluid's viscosity
   std::string viscous_operator = "auto";      // auto | morris | stress (seed eqs. 14-15)
   std::string viscosity_mean = "arithmetic";  // arithmetic | harmonic, pair mean (Morris term)
   bool corrected_velocity_gradient = true;    // kernel-gradient-corrected shear rate
   DensityTreatment density;
+  Shifting shifting;
   std::optional<int> wall_layers;       // when absent, enough layers to cover the kernel support
   bool negative_wall_pressure = false;  // false: p_w = max(p_w, 0) (free-surface flows)
   TimeStepFactors time_step;

@@ -28,6 +28,15 @@ DensityTreatment read_density(Reader& sph_section) {
   return density;
 }
 
+Shifting read_shifting(Reader& sph_section) {
+  Reader section = sph_section.optional_map("shifting");
+  Shifting shifting;
+  shifting.model = section.choice("model", shifting.model, {"none", "fickian"});
+  shifting.coefficient = section.optional<double>("coefficient", shifting.coefficient, kPositive);
+  section.done();
+  return shifting;
+}
+
 TimeStepFactors read_time_step(Reader& sph_section) {
   Reader section = sph_section.optional_map("time_step");
   TimeStepFactors factors;
@@ -74,6 +83,7 @@ Config read_config(Reader& root, const Domain& domain) {
   config.sound_speed = section.automatic<double>("sound_speed", kPositive);
   config.max_velocity = section.automatic<double>("max_velocity", kPositive);
   config.mach_factor = section.optional<double>("mach_factor", config.mach_factor, kPositive);
+  config.flow_length = section.automatic<double>("flow_length", kPositive);
   config.artificial_viscosity =
       section.optional<double>("artificial_viscosity", config.artificial_viscosity, kNonNegative);
   config.laminar_viscosity = section.optional<bool>("laminar_viscosity", config.laminar_viscosity);
@@ -84,6 +94,7 @@ Config read_config(Reader& root, const Domain& domain) {
   config.corrected_velocity_gradient =
       section.choice("velocity_gradient", "corrected", {"corrected", "plain"}) == "corrected";
   config.density = read_density(section);
+  config.shifting = read_shifting(section);
   config.wall_layers = section.automatic<int>("wall_layers", at_least(1));
   config.negative_wall_pressure =
       section.optional<bool>("negative_wall_pressure", config.negative_wall_pressure);

@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "particles/store_state.hpp"
 #include "sph/fluid_rates.hpp"
+#include "sph/particle_shifting.hpp"
 #include "sph/shear_rate.hpp"
 #include "sph/shepard_filter.hpp"
 #include "sph/sound_speed.hpp"
@@ -72,7 +73,9 @@ Parameters make_parameters(const Config& config, const FluidProperties& fluid, c
   p.reference_density = fluid.density;
   p.gravity = gravity;
   p.hydrostatic_gravity = without_periodic_axes(gravity, domain);
-  p.sound_speed = resolve_sound_speed(config, store, p.hydrostatic_gravity);
+  p.sound_speed =
+      resolve_sound_speed(config, store, p.hydrostatic_gravity,
+                          materials::BoundedRheology(fluid.rheology), fluid.density, p.dimensions);
   p.viscous_operator = viscous_operator_from(config, fluid);
   p.harmonic_viscosity_mean = config.viscosity_mean == "harmonic";
   p.artificial_viscosity = config.artificial_viscosity;
@@ -279,6 +282,12 @@ void WcsphSolver::step(double dt) {
   ++steps_;
   time_ += dt;
   move_bodies(time_);
+  if (config_.shifting.model == "fickian") {
+    grid_.build(fields_.position);
+    shift_particles(fields_, fluid_count_, grid_, kernel_table_, parameters_,
+                    {config_.shifting.coefficient, max_speed_}, dt, shifting_);
+    wrap_positions();
+  }
   if (config_.density.shepard &&
       steps_ % static_cast<std::size_t>(config_.density.shepard_interval) == 0) {
     grid_.build(fields_.position);

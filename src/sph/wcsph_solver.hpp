@@ -16,6 +16,7 @@
 #include "sph/kernel.hpp"
 #include "sph/kernel_table.hpp"
 #include "sph/parameters.hpp"
+#include "sph/particle_shifting.hpp"
 
 namespace partimix::sph {
 
@@ -85,6 +86,7 @@ class WcsphSolver final : public Solver {
   std::vector<Vec3> start_velocity_;
   std::vector<double> start_density_;
   std::vector<double> scratch_;
+  ShiftingScratch shifting_;
   std::vector<Vec3>* body_force_ = nullptr;  // store fields, when there are bodies
   std::vector<Vec3>* body_couple_ = nullptr;
 };

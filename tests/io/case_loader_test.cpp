@@ -32,6 +32,7 @@ sph:
   sound_speed: 40
   max_velocity: 4.5
   mach_factor: 12
+  flow_length: 0.02
   artificial_viscosity: 0.02
   laminar_viscosity: false
   viscous_operator: stress
@@ -129,6 +130,7 @@ TEST(CaseLoader, Full2DCaseHasTheSphSettingsWritten) {
   EXPECT_EQ(sph.sound_speed, 40.0);
   EXPECT_EQ(sph.max_velocity, 4.5);
   EXPECT_DOUBLE_EQ(sph.mach_factor, 12.0);
+  EXPECT_EQ(sph.flow_length, 0.02);
   EXPECT_DOUBLE_EQ(sph.artificial_viscosity, 0.02);
   EXPECT_FALSE(sph.laminar_viscosity);
   EXPECT_EQ(sph.viscous_operator, "stress");
