@@ -28,8 +28,11 @@ struct Shifting {
 };
 
 struct Config {
-  double spacing = 0.0;          // initial particle spacing dp [m]
-  double smoothing_ratio = 1.5;  // h / dp (docs/sph.md, "Choice of h")
+  std::string scheme = "weakly_compressible";  // | incompressible (docs/sph.md)
+  double pressure_tolerance = 1e-6;            // incompressible: relative residual of the solve
+  int pressure_iterations = 1000;              // incompressible: BiCGSTAB iterations at most
+  double spacing = 0.0;                        // initial particle spacing dp [m]
+  double smoothing_ratio = 1.5;                // h / dp (docs/sph.md, "Choice of h")
   std::string kernel = "wendland_c2";
   std::string gradient_kernel;             // empty: the same as kernel
   std::string equation_of_state = "tait";  // tait | linear

@@ -53,20 +53,28 @@ double viscous_scale(const Config& config, const ParticleStore& store, double ma
 
 }  // namespace
 
+double estimated_max_velocity(const Config& config, const ParticleStore& store,
+                              const Vec3& hydrostatic_gravity) {
+  const double height = fluid_height(store, hydrostatic_gravity, config.spacing);
+  const double max_velocity =
+      config.max_velocity.value_or(2.0 * std::sqrt(hydrostatic_gravity.norm() * height));
+  if (!(max_velocity > 0.0)) {
+    throw InputError(InputLocation{"", 0, 0, "sph.max_velocity"},
+                     "cannot estimate the flow speed without gravity across the fluid; give "
+                     "sph.max_velocity or sph.sound_speed");
+  }
+  return max_velocity;
+}
+
 double resolve_sound_speed(const Config& config, const ParticleStore& store,
                            const Vec3& hydrostatic_gravity,
                            const materials::BoundedRheology& rheology, double density,
                            int dimensions) {
   if (config.sound_speed)
     return *config.sound_speed;
-  const double height = fluid_height(store, hydrostatic_gravity, config.spacing);
-  const double gravity_scale = hydrostatic_gravity.norm() * height;
-  const double max_velocity = config.max_velocity.value_or(2.0 * std::sqrt(gravity_scale));
-  if (!(max_velocity > 0.0)) {
-    throw InputError(InputLocation{"", 0, 0, "sph.max_velocity"},
-                     "cannot estimate the flow speed without gravity across the fluid; give "
-                     "sph.max_velocity or sph.sound_speed");
-  }
+  const double gravity_scale =
+      hydrostatic_gravity.norm() * fluid_height(store, hydrostatic_gravity, config.spacing);
+  const double max_velocity = estimated_max_velocity(config, store, hydrostatic_gravity);
   const double viscous = viscous_scale(config, store, max_velocity, rheology, density, dimensions);
   const double squared = std::max({max_velocity * max_velocity, viscous, gravity_scale});
   return config.mach_factor * std::sqrt(squared);

@@ -23,6 +23,11 @@ double fluid_height(const ParticleStore& store, const Vec3& gravity, double spac
 // The fluid's narrowest extent over the first `dimensions` axes, plus one spacing.
 double fluid_narrowest_extent(const ParticleStore& store, int dimensions, double spacing);
 
+// U_max: sph.max_velocity, or 2 sqrt(|g| H). Throws InputError naming sph.max_velocity when
+// neither gives a positive speed.
+double estimated_max_velocity(const Config& config, const ParticleStore& store,
+                              const Vec3& hydrostatic_gravity);
+
 // Throws InputError naming sph.max_velocity when no estimate is possible.
 double resolve_sound_speed(const Config& config, const ParticleStore& store,
                            const Vec3& hydrostatic_gravity,

@@ -4,7 +4,7 @@
 
 #include "sph/free_surface.hpp"
 #include "sph/particle_generation.hpp"
-#include "sph/wcsph_solver.hpp"
+#include "sph/sph_solver.hpp"
 
 namespace partimix::sph {
 
@@ -22,10 +22,10 @@ io::MethodInstance SphMethod::build(const io::Case& the_case, const io::MethodSp
   instance.store = std::make_unique<ParticleStore>();
   generate_particles(the_case, section, instance);
   try {
-    instance.solver = std::make_unique<WcsphSolver>(
-        *instance.store, the_case.domain, section.config,
-        FluidProperties{section.fluid.density, section.fluid.rheology}, the_case.gravity,
-        instance.bodies.get());
+    instance.solver =
+        std::make_unique<SphSolver>(*instance.store, the_case.domain, section.config,
+                                    FluidProperties{section.fluid.density, section.fluid.rheology},
+                                    the_case.gravity, instance.bodies.get());
   } catch (const InputError& error) {
     throw io::case_error(the_case, error.location().key_path, error.message());
   }

@@ -101,6 +101,12 @@ Config read_config(Reader& root, const Domain& domain) {
   config.time_step = read_time_step(section);
   config.sort_interval = section.optional<int>("sort_interval", config.sort_interval, at_least(1));
   config.polar_centre = read_polar_centre(section, domain);
+  config.scheme =
+      section.choice("scheme", config.scheme, {"weakly_compressible", "incompressible"});
+  config.pressure_tolerance =
+      section.optional<double>("pressure_tolerance", config.pressure_tolerance, kPositive);
+  config.pressure_iterations =
+      section.optional<int>("pressure_iterations", config.pressure_iterations, at_least(1));
   section.done();
   return config;
 }

@@ -33,6 +33,9 @@ sph:
   max_velocity: 4.5
   mach_factor: 12
   flow_length: 0.02
+  scheme: incompressible
+  pressure_tolerance: 1.0e-8
+  pressure_iterations: 300
   artificial_viscosity: 0.02
   laminar_viscosity: false
   viscous_operator: stress
@@ -131,6 +134,9 @@ TEST(CaseLoader, Full2DCaseHasTheSphSettingsWritten) {
   EXPECT_EQ(sph.max_velocity, 4.5);
   EXPECT_DOUBLE_EQ(sph.mach_factor, 12.0);
   EXPECT_EQ(sph.flow_length, 0.02);
+  EXPECT_EQ(sph.scheme, "incompressible");
+  EXPECT_DOUBLE_EQ(sph.pressure_tolerance, 1.0e-8);
+  EXPECT_EQ(sph.pressure_iterations, 300);
   EXPECT_DOUBLE_EQ(sph.artificial_viscosity, 0.02);
   EXPECT_FALSE(sph.laminar_viscosity);
   EXPECT_EQ(sph.viscous_operator, "stress");

@@ -63,13 +63,19 @@ Deviation deviation_from_exact(const ParticleStore& store, double t) {
   return d;
 }
 
-class Poiseuille : public ::testing::TestWithParam<const char*> {};
+struct Variant {
+  const char* viscous_operator;
+  const char* scheme;
+};
+
+class Poiseuille : public ::testing::TestWithParam<Variant> {};
 
 TEST_P(Poiseuille, VelocityProfileFollowsTheTransientSolution) {
   const double spacing = kWidth / 20.0;
   io::Case c = testing_cases::poiseuille_2d(kWidth, 12 * spacing, spacing, kForce, 1000.0,
                                             1000.0 * kNu, kMaxVelocity);
-  testing_cases::sph_of(c).config.viscous_operator = GetParam();
+  testing_cases::sph_of(c).config.viscous_operator = GetParam().viscous_operator;
+  testing_cases::sph_of(c).config.scheme = GetParam().scheme;
   app::Simulation sim = app::build_simulation(c);
   double t = 0.0;
   for (double check : {0.0225, 0.045, 0.1125, 0.225, 1.0}) {
@@ -86,7 +92,10 @@ TEST_P(Poiseuille, VelocityProfileFollowsTheTransientSolution) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(ViscousOperators, Poiseuille, ::testing::Values("morris", "stress"));
+INSTANTIATE_TEST_SUITE_P(ViscousOperators, Poiseuille,
+                         ::testing::Values(Variant{"morris", "weakly_compressible"},
+                                           Variant{"stress", "weakly_compressible"},
+                                           Variant{"morris", "incompressible"}));
 
 }  // namespace
 }  // namespace partimix

@@ -33,7 +33,7 @@
 
 #include "analysis/body_load.hpp"
 #include "couette_profile.hpp"
-#include "sph/wcsph_solver.hpp"
+#include "sph/sph_solver.hpp"
 
 namespace partimix {
 namespace {
@@ -127,7 +127,7 @@ Measured run(const Fluid& fluid_model, const std::string& viscous_operator, int 
     fluid.rheology = {};
     fluid.rheology.viscosity = fluid_model.consistency;
   }
-  sph::WcsphSolver solver(store, domain, config, fluid, Vec3::Zero(), &bodies);
+  sph::SphSolver solver(store, domain, config, fluid, Vec3::Zero(), &bodies);
   const double end_time = 0.01;
   for (double t = 0.0; t < end_time;) {
     const double dt = std::min(solver.stable_dt(), end_time - t);

@@ -2,13 +2,18 @@
 // Hu & Adams 2013, section 4.1): in the periodic unit square
 //   u = -U e^(b t) cos(2 pi x) sin(2 pi y),  v = U e^(b t) sin(2 pi x) cos(2 pi y),
 //   p = -rho U^2 e^(2 b t) (cos(4 pi x) + cos(4 pi y)) / 4,  b = -8 pi^2 nu / L^2,
-// the largest speed decays as e^(b t). WCSPH, Morris viscosity, h = 1.5 dp, 50 x 50 particles,
-// c0 = 10 U, to t = 2 s (e^(b t) = 0.21), with Fickian shifting (docs/sph.md, "Particle
-// shifting"). Asserted: the decay rate fitted to the largest speed over 0.25-2 s within 3% of b
-// (the Morris term's regularisation alone makes the viscosity about 2% low: docs/sph.md,
-// "Viscosity"), and the L2 velocity error at 2 s below 5% of U e^(b t). Measured: -0.1% and
-// 2.8%; without shifting the particles cluster at the stagnation points and the vortex loses 30%
-// of its speed by t = 0.4 s (L2 error 0.59 at 2 s; docs/sph.md).
+// the largest speed decays as e^(b t). Morris viscosity, h = 1.5 dp, 50 x 50 particles, to
+// t = 2 s (e^(b t) = 0.21), with Fickian shifting (docs/sph.md, "Particle shifting").
+// - Weakly compressible, c0 = 10 U. Asserted: the decay rate fitted to the largest speed over
+//   0.25-2 s within 3% of b (the Morris term's regularisation alone makes the viscosity about 2%
+//   low: docs/sph.md, "Viscosity"), and the L2 velocity error at 2 s below 5% of U e^(b t).
+//   Measured: -0.1% and 2.8%; without shifting the particles cluster at the stagnation points
+//   and the vortex loses 30% of its speed by t = 0.4 s (L2 error 0.59 at 2 s; docs/sph.md).
+// - Incompressible (projection), dt = 0.2 h / U, 11 times the weakly-compressible step. Asserted:
+//   the rate within 4% and the L2 error below 5%. Measured: -2.9% and 3.6%. The decay is slower
+//   than the weakly-compressible one and, unexplained so far, more so with a smaller step (-4.4%
+//   and 4.8% at dt = 0.1 h / U; docs/sph.md, "Incompressible SPH"); without shifting the
+//   projection blows up by t = 0.14 s.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -39,7 +44,7 @@ double exact_pressure(const Vec3& x) {
          4.0;
 }
 
-io::Case taylor_green(const std::string& shifting) {
+io::Case taylor_green(const std::string& scheme, const std::string& shifting) {
   io::Case c;
   c.name = "taylor_green";
   sph::SphSection& sph = testing_cases::add_sph(c);
@@ -51,6 +56,7 @@ io::Case taylor_green(const std::string& shifting) {
   sph.config.max_velocity = kSpeed;
   sph.config.equation_of_state = "linear";
   sph.config.shifting.model = shifting;
+  sph.config.scheme = scheme;
   sph.fluid.density = 1000.0;
   sph.fluid.rheology.viscosity = 1000.0 * kViscosity;
   sph.fluid.regions.push_back(
@@ -76,8 +82,8 @@ struct Decay {
   double l2_error = 0.0;  // of the velocity at the end, over U e^(b t)
 };
 
-Decay run_vortex(const std::string& shifting) {
-  app::Simulation sim = app::build_simulation(taylor_green(shifting));
+Decay run_vortex(const std::string& scheme, const std::string& shifting) {
+  app::Simulation sim = app::build_simulation(taylor_green(scheme, shifting));
   start_vortex(sim);
   Solver& solver = *sim.methods[0].solver;
   const ParticleStore& store = solver.particles();
@@ -112,15 +118,22 @@ Decay run_vortex(const std::string& shifting) {
   d.l2_error =
       std::sqrt(error2 / static_cast<double>(store.size())) / (kSpeed * std::exp(kDecay * t));
   std::printf(
-      "Taylor-Green, shifting %s: decay rate %.4f 1/s (exact %.4f, %+.2f%%), L2 error at "
-      "t = 2 s %.4f\n",
-      shifting.c_str(), d.rate, kDecay, 100.0 * (d.rate / kDecay - 1.0), d.l2_error);
+      "Taylor-Green, %s, shifting %s: decay rate %.4f 1/s (exact %.4f, %+.2f%%), L2 error "
+      "at t = 2 s %.4f\n",
+      scheme.c_str(), shifting.c_str(), d.rate, kDecay, 100.0 * (d.rate / kDecay - 1.0),
+      d.l2_error);
   return d;
 }
 
 TEST(TaylorGreen, DecaysAtTheAnalyticalRateWithShifting) {
-  const Decay shifted = run_vortex("fickian");
+  const Decay shifted = run_vortex("weakly_compressible", "fickian");
   EXPECT_NEAR(shifted.rate / kDecay, 1.0, 0.03);
+  EXPECT_LT(shifted.l2_error, 0.05);
+}
+
+TEST(TaylorGreen, DecaysAtTheAnalyticalRateIncompressible) {
+  const Decay shifted = run_vortex("incompressible", "fickian");
+  EXPECT_NEAR(shifted.rate / kDecay, 1.0, 0.04);
   EXPECT_LT(shifted.l2_error, 0.05);
 }
 

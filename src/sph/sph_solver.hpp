@@ -3,6 +3,7 @@
 // 8-13 and 17-20 with Adami walls, delta-SPH, and the symplectic predictor-corrector of
 // Monaghan (2005) / DualSPHysics with adaptive time step.
 #include <memory>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "sph/kernel_table.hpp"
 #include "sph/parameters.hpp"
 #include "sph/particle_shifting.hpp"
+#include "sph/pressure_poisson.hpp"
 
 namespace partimix::sph {
 
@@ -25,16 +27,16 @@ struct FluidProperties {
   materials::RheologyConfig rheology;  // apparent viscosity model
 };
 
-class WcsphSolver final : public Solver {
+class SphSolver final : public Solver {
  public:
   // `store` holds fluid and wall particles with kind and position set. The solver sets masses
   // (rho0 dp^d), hydrostatic initial densities and its own fields. Throws InputError
   // naming the case key when the configuration cannot be used (e.g. no way to set c0).
   // `bodies` (may be null) moves the wall particles of bodies with prescribed motions; it
   // must outlive the solver.
-  WcsphSolver(ParticleStore& store, const Domain& domain, const Config& config,
-              const FluidProperties& fluid, const Vec3& gravity,
-              geometry::MovingBodies* bodies = nullptr);
+  SphSolver(ParticleStore& store, const Domain& domain, const Config& config,
+            const FluidProperties& fluid, const Vec3& gravity,
+            geometry::MovingBodies* bodies = nullptr);
 
   std::string_view name() const override { return "sph"; }
   const ParticleStore& particles() const override { return store_; }
@@ -53,6 +55,10 @@ class WcsphSolver final : public Solver {
   void interact();
   void predict(double dt);
   void correct(double dt);
+  void advance_weakly_compressible(double dt);
+  void advance_incompressible(double dt);
+  void refresh_incompressible();
+  void shift_particles_after_step(double dt);
   void wrap_positions();
   void move_bodies(double time);
   void sort_by_cell();
@@ -87,6 +93,9 @@ class WcsphSolver final : public Solver {
   std::vector<double> start_density_;
   std::vector<double> scratch_;
   ShiftingScratch shifting_;
+  // The incompressible scheme's pressure solve; absent for the weakly-compressible one.
+  std::optional<PressurePoisson> poisson_;
+  double flow_speed_estimate_ = 0.0;         // U of the incompressible time step [m/s]
   std::vector<Vec3>* body_force_ = nullptr;  // store fields, when there are bodies
   std::vector<Vec3>* body_couple_ = nullptr;
 };

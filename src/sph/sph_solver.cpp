@@ -1,4 +1,4 @@
-#include "sph/wcsph_solver.hpp"
+#include "sph/sph_solver.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "particles/store_state.hpp"
+#include "sph/eos/incompressible_eos.hpp"
 #include "sph/fluid_rates.hpp"
 #include "sph/particle_shifting.hpp"
 #include "sph/shear_rate.hpp"
@@ -85,11 +86,21 @@ Parameters make_parameters(const Config& config, const FluidProperties& fluid, c
   return p;
 }
 
+// The incompressible scheme keeps the density at rho0 (docs/sph.md, "Incompressible SPH").
+std::unique_ptr<EquationOfState> make_equation_of_state(const Config& config,
+                                                        const FluidProperties& fluid,
+                                                        double sound_speed) {
+  if (config.scheme == "incompressible")
+    return std::make_unique<IncompressibleEos>(fluid.density);
+  return equation_of_state_registry().create(
+      config.equation_of_state, EosParameters{fluid.density, sound_speed, config.tait_gamma});
+}
+
 }  // namespace
 
-WcsphSolver::WcsphSolver(ParticleStore& store, const Domain& domain, const Config& config,
-                         const FluidProperties& fluid, const Vec3& gravity,
-                         geometry::MovingBodies* bodies)
+SphSolver::SphSolver(ParticleStore& store, const Domain& domain, const Config& config,
+                     const FluidProperties& fluid, const Vec3& gravity,
+                     geometry::MovingBodies* bodies)
     : store_(store),
       domain_(domain),
       config_(config),
@@ -99,9 +110,7 @@ WcsphSolver::WcsphSolver(ParticleStore& store, const Domain& domain, const Confi
       gradient_kernel_(
           make_kernel(config.gradient_kernel.empty() ? config.kernel : config.gradient_kernel,
                       "sph.gradient_kernel")),
-      eos_(equation_of_state_registry().create(
-          config.equation_of_state,
-          EosParameters{fluid.density, parameters_.sound_speed, config.tait_gamma})),
+      eos_(make_equation_of_state(config, fluid, parameters_.sound_speed)),
       kernel_table_(*kernel_, parameters_.h, domain.dimensions),
       gradient_table_(*gradient_kernel_, parameters_.h, domain.dimensions),
       grid_(domain, std::max(kernel_table_.support_radius(), gradient_table_.support_radius())),
@@ -118,12 +127,20 @@ WcsphSolver::WcsphSolver(ParticleStore& store, const Domain& domain, const Confi
     body_force_ = &store_.add_vector("body_force", "N", false).values;
     body_couple_ = &store_.add_vector("body_couple", "N m", false).values;
   }
+  if (config.scheme == "incompressible") {
+    poisson_.emplace(config.pressure_tolerance, config.pressure_iterations);
+    flow_speed_estimate_ = estimated_max_velocity(config, store, parameters_.hydrostatic_gravity);
+    parameters_.diffusion = DensityDiffusion::none;
+  }
   initialise_fluid();
   fluid_count_ = static_cast<std::size_t>(std::count_if(
       fields_.kind.begin(), fields_.kind.end(), [](std::int32_t k) { return is_fluid(k); }));
   move_bodies(0.0);
   sort_by_cell();
-  interact();
+  if (poisson_)
+    refresh_incompressible();
+  else
+    interact();
   initial_dt_ = stable_dt();
 }
 
@@ -132,7 +149,7 @@ WcsphSolver::WcsphSolver(ParticleStore& store, const Domain& domain, const Confi
 // tau . n with tau = eta (G + G^T); the Morris term carries only the eta G part to the walls, so
 // with it the loads add the eta G^T part at its exact value on a rigid wall (docs/power.md,
 // "Viscous traction").
-void WcsphSolver::update_body_forces() {
+void SphSolver::update_body_forces() {
   if (body_force_ == nullptr)
     return;
   const WallTraction traction = parameters_.viscous_operator == ViscousOperator::morris
@@ -142,7 +159,7 @@ void WcsphSolver::update_body_forces() {
                       {*body_force_, *body_couple_});
 }
 
-void WcsphSolver::initialise_fluid() {
+void SphSolver::initialise_fluid() {
   const double volume = std::pow(parameters_.spacing, domain_.dimensions);
   const Vec3& g = parameters_.hydrostatic_gravity;
   const double g_norm = g.norm();
@@ -164,19 +181,19 @@ void WcsphSolver::initialise_fluid() {
   wrap_positions();
 }
 
-void WcsphSolver::move_bodies(double time) {
+void SphSolver::move_bodies(double time) {
   if (bodies_ != nullptr)
     bodies_->move_to(time);
 }
 
-void WcsphSolver::wrap_positions() {
+void SphSolver::wrap_positions() {
   for (auto& x : fields_.position)
     domain_.wrap(x);
 }
 
 // Orders the store by kind, then by cell: fluid particles take [0, fluid_count_) and, as the
 // grid's counting sort keeps index order within a cell, come before walls in every cell.
-void WcsphSolver::sort_by_cell() {
+void SphSolver::sort_by_cell() {
   grid_.build(fields_.position);
   sort_order_.resize(store_.size());
   std::size_t next_fluid = 0;
@@ -187,7 +204,7 @@ void WcsphSolver::sort_by_cell() {
   store_.reorder(sort_order_);
 }
 
-void WcsphSolver::interact() {
+void SphSolver::interact() {
   grid_.build(fields_.position);
   for (std::size_t i = 0; i < fluid_count_; ++i) {
     fields_.pressure[i] = eos_->pressure(fields_.density[i]);
@@ -203,7 +220,7 @@ void WcsphSolver::interact() {
 // Apparent viscosity of each fluid particle from its shear rate (docs/rheology.md), and the
 // viscous stresses for the stress form; with the Morris form a Newtonian fluid skips the shear
 // rates.
-void WcsphSolver::update_viscosity() {
+void SphSolver::update_viscosity() {
   if (parameters_.viscous_operator == ViscousOperator::stress) {
     max_viscosity_ =
         compute_viscous_stress(fields_, fluid_count_, grid_, gradient_table_, kernel_table_,
@@ -224,10 +241,11 @@ void WcsphSolver::update_viscosity() {
   max_viscosity_ = largest;
 }
 
-double WcsphSolver::stable_dt() const {
+double SphSolver::stable_dt() const {
   const TimeStepFactors& factors = config_.time_step;
   const double h = parameters_.h;
-  double dt = factors.cfl * h / (parameters_.sound_speed + max_speed_);
+  double dt = poisson_ ? factors.cfl * h / std::max(max_speed_, flow_speed_estimate_)
+                       : factors.cfl * h / (parameters_.sound_speed + max_speed_);
   const double nu = max_viscosity_ / parameters_.reference_density;
   if (parameters_.viscous_operator != ViscousOperator::none && nu > 0.0) {
     dt = std::min(dt, factors.viscous * h * h / nu);
@@ -239,7 +257,7 @@ double WcsphSolver::stable_dt() const {
 }
 
 // Symplectic position-Verlet (docs/sph.md, "Time integration"), half step.
-void WcsphSolver::predict(double dt) {
+void SphSolver::predict(double dt) {
   start_position_.resize(fluid_count_);
   start_velocity_.resize(fluid_count_);
   start_density_.resize(fluid_count_);
@@ -259,7 +277,7 @@ void WcsphSolver::predict(double dt) {
 
 // Corrector: full step from the start state with the rates at the half step; the density
 // update rho^{n+1} = rho^n (2 - eps) / (2 + eps), eps = -(drho/dt / rho)^{n+1/2} dt.
-void WcsphSolver::correct(double dt) {
+void SphSolver::correct(double dt) {
   const auto n = static_cast<std::ptrdiff_t>(fluid_count_);
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
@@ -274,20 +292,83 @@ void WcsphSolver::correct(double dt) {
 
 // Moving walls are placed at the instant of each rate evaluation: t + dt/2 for the predictor's
 // rates, t + dt for the end of the step.
-void WcsphSolver::step(double dt) {
+void SphSolver::advance_weakly_compressible(double dt) {
   predict(dt);
   move_bodies(time_ + 0.5 * dt);
   interact();
   correct(dt);
+}
+
+// The projection step (docs/sph.md, "Incompressible SPH"): the rates of the viscous prediction
+// are taken at x^n without pressure, the wall state being that of the end of the last step; the
+// last step's pressures are the solve's first guess.
+void SphSolver::advance_incompressible(double dt) {
+  scratch_.assign(fields_.pressure.begin(), fields_.pressure.end());  // the solve's first guess
+  std::fill(fields_.pressure.begin(), fields_.pressure.end(), 0.0);
+  compute_fluid_rates(fields_, fluid_count_, grid_, gradient_table_, parameters_);
+  std::copy(scratch_.begin(), scratch_.end(), fields_.pressure.begin());
+  start_position_.resize(fluid_count_);
+  start_velocity_.resize(fluid_count_);
+  for (std::size_t i = 0; i < fluid_count_; ++i) {
+    start_position_[i] = fields_.position[i];
+    start_velocity_[i] = fields_.velocity[i];
+    fields_.velocity[i] += dt * fields_.acceleration[i];
+    fields_.position[i] += dt * fields_.velocity[i];
+  }
+  wrap_positions();
+  move_bodies(time_ + dt);
+  grid_.build(fields_.position);
+  const PressureSolve solve = poisson_->solve(fields_, fluid_count_, grid_, kernel_table_,
+                                              gradient_table_, parameters_, dt);
+  if (!solve.converged) {
+    throw RunError(fmt::format(
+        "the pressure Poisson equation did not converge at t = {:.6g} s: relative residual {:.3g} "
+        "after {} iterations (sph.pressure_tolerance {:.3g}, sph.pressure_iterations {})",
+        time_, solve.residual, solve.iterations, config_.pressure_tolerance,
+        config_.pressure_iterations));
+  }
+  project_velocities(fields_, fluid_count_, grid_, gradient_table_, parameters_, dt);
+  for (std::size_t i = 0; i < fluid_count_; ++i) {
+    fields_.acceleration[i] = (fields_.velocity[i] - start_velocity_[i]) / dt;
+    fields_.position[i] =
+        start_position_[i] + 0.5 * dt * (start_velocity_[i] + fields_.velocity[i]);
+  }
+  wrap_positions();
+}
+
+// The state at the end of an incompressible step: wall ghost velocities and pressures, apparent
+// viscosities, the extremes of the time step.
+void SphSolver::refresh_incompressible() {
+  grid_.build(fields_.position);
+  update_wall_state(fields_, fluid_count_, grid_, kernel_table_, *eos_, parameters_);
+  update_viscosity();
+  double max_speed2 = 0.0;
+  double max_acceleration2 = 0.0;
+  for (std::size_t i = 0; i < fluid_count_; ++i) {
+    max_speed2 = std::max(max_speed2, fields_.velocity[i].squaredNorm());
+    max_acceleration2 = std::max(max_acceleration2, fields_.acceleration[i].squaredNorm());
+  }
+  max_speed_ = std::sqrt(max_speed2);
+  max_acceleration_ = std::sqrt(max_acceleration2);
+}
+
+void SphSolver::shift_particles_after_step(double dt) {
+  grid_.build(fields_.position);
+  shift_particles(fields_, fluid_count_, grid_, kernel_table_, parameters_,
+                  {config_.shifting.coefficient, max_speed_}, dt, shifting_);
+  wrap_positions();
+}
+
+void SphSolver::step(double dt) {
+  if (poisson_)
+    advance_incompressible(dt);
+  else
+    advance_weakly_compressible(dt);
   ++steps_;
   time_ += dt;
   move_bodies(time_);
-  if (config_.shifting.model == "fickian") {
-    grid_.build(fields_.position);
-    shift_particles(fields_, fluid_count_, grid_, kernel_table_, parameters_,
-                    {config_.shifting.coefficient, max_speed_}, dt, shifting_);
-    wrap_positions();
-  }
+  if (config_.shifting.model == "fickian")
+    shift_particles_after_step(dt);
   if (config_.density.shepard &&
       steps_ % static_cast<std::size_t>(config_.density.shepard_interval) == 0) {
     grid_.build(fields_.position);
@@ -296,12 +377,16 @@ void WcsphSolver::step(double dt) {
   if (steps_ % static_cast<std::size_t>(config_.sort_interval) == 0) {
     sort_by_cell();
   }
+  if (poisson_) {
+    refresh_incompressible();
+    return;
+  }
   interact();
   warn_once_if_too_fast();
 }
 
 // The Mach criterion c0 >= mach_factor * U_max (docs/sph.md) is checked as the run goes.
-void WcsphSolver::warn_once_if_too_fast() {
+void SphSolver::warn_once_if_too_fast() {
   if (warned_about_speed_ || max_speed_ * config_.mach_factor <= parameters_.sound_speed)
     return;
   warned_about_speed_ = true;
@@ -317,7 +402,7 @@ namespace partimix::sph {
 
 // The store holds every per-particle array the next step reads; the viscous stresses are not
 // saved: every interaction recomputes them before use, and analyses sample after a step.
-void WcsphSolver::save(StateArchive& archive, const std::string& prefix) const {
+void SphSolver::save(StateArchive& archive, const std::string& prefix) const {
   save_store(store_, archive, prefix);
   archive.put_scalar(prefix + "time", time_);
   archive.put_integers(prefix + "steps",
@@ -328,7 +413,7 @@ void WcsphSolver::save(StateArchive& archive, const std::string& prefix) const {
                        std::vector<std::int64_t>{warned_about_speed_ ? 1 : 0});
 }
 
-void WcsphSolver::restore(const StateArchive& archive, const std::string& prefix) {
+void SphSolver::restore(const StateArchive& archive, const std::string& prefix) {
   restore_store(store_, archive, prefix);
   time_ = archive.scalar(prefix + "time");
   steps_ = static_cast<std::size_t>(archive.integers(prefix + "steps").front());
@@ -341,7 +426,7 @@ void WcsphSolver::restore(const StateArchive& archive, const std::string& prefix
   warned_about_speed_ = archive.integers(prefix + "warned_about_speed").front() != 0;
 }
 
-std::map<std::string, double> WcsphSolver::derived_parameters() const {
+std::map<std::string, double> SphSolver::derived_parameters() const {
   const std::size_t fluid = fluid_count_;
   return {{"smoothing_length [m]", parameters_.h},
           {"sound_speed [m/s]", parameters_.sound_speed},

@@ -1,0 +1,162 @@
+#include "sph/pressure_poisson.hpp"
+
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace partimix::sph {
+
+namespace {
+
+// A fluid particle whose position divergence is below this part of d lies at a free surface
+// (the criterion of the particle shifting, docs/sph.md).
+constexpr double kSurfaceDivergence = 0.75;
+
+// u*_i - u_j; against a wall, less the velocity dt (g - a_w) that gravity and the wall's own
+// acceleration gave the fluid in this step: the wall's extrapolated pressure (its row) already
+// carries that part (docs/sph.md, "Incompressible SPH"), as it does in the weakly-compressible
+// solver, whose continuity equation sees only the fluid's actual motion against the wall.
+Vec3 relative_velocity(std::size_t i, std::size_t j, const Fields& f, const Parameters& p,
+                       double dt) {
+  const Vec3 relative = f.velocity[i] - f.velocity[j];
+  if (is_fluid(f.kind[j]))
+    return relative;
+  Vec3 relative_gravity = p.gravity;
+  if (f.body_acceleration != nullptr)
+    relative_gravity -= (*f.body_acceleration)[j];
+  return relative - dt * relative_gravity;
+}
+
+}  // namespace
+
+PressurePoisson::PressurePoisson(double tolerance, int max_iterations) {
+  solver_.setTolerance(tolerance);
+  solver_.setMaxIterations(max_iterations);
+}
+
+// Row i: (sum_j A_ij) p_i - sum_j A_ij p_j = -rho0 (div u*)_i / dt with
+// A_ij = -2 V_j (r_ij . grad_i W_ij) / (r_ij^2 + eta^2) >= 0, or p_i = 0 at a free surface.
+void PressurePoisson::add_fluid_row(std::size_t i, const Fields& f, const CellGrid& grid,
+                                    const KernelTable& kernel, const Parameters& p, double dt) {
+  const std::size_t first = entries_.size();
+  double diagonal = 0.0;
+  double divergence = 0.0;
+  double position_divergence = 0.0;
+  grid.for_each_neighbour(i, f.position, [&](std::size_t j, const Vec3& r_ij, double r2) {
+    if (j == i)
+      return;
+    const double r = std::sqrt(r2);
+    const Vec3 grad = (kernel.derivative(r) / r) * r_ij;
+    const double volume = f.mass[j] / p.reference_density;
+    const double r_dot_grad = r_ij.dot(grad);
+    const double a_ij = -2.0 * volume * r_dot_grad / (r2 + p.eta2);
+    entries_.emplace_back(static_cast<int>(i), static_cast<int>(j), -a_ij);
+    diagonal += a_ij;
+    divergence -= volume * relative_velocity(i, j, f, p, dt).dot(grad);
+    position_divergence -= volume * r_dot_grad;
+  });
+  const auto row = static_cast<int>(i);
+  if (position_divergence < kSurfaceDivergence * p.dimensions) {
+    entries_.resize(first);
+    entries_.emplace_back(row, row, 1.0);
+    rhs_[row] = 0.0;
+    has_dirichlet_row_ = true;
+    return;
+  }
+  entries_.emplace_back(row, row, diagonal);
+  rhs_[row] = -p.reference_density * divergence / dt;
+}
+
+// Row w: p_w - sum_f (W_wf / sum W) p_f = rho0 (g - a_w) . sum_f r_wf W_wf / sum W, or p_w = 0
+// without fluid around (Adami et al. 2012, eq. 27 with rho_f = rho0).
+void PressurePoisson::add_wall_row(std::size_t w, const Fields& f, std::size_t fluid_count,
+                                   const CellGrid& grid, const KernelTable& kernel,
+                                   const Parameters& p) {
+  const std::size_t first = entries_.size();
+  double weight = 0.0;
+  Vec3 moment = Vec3::Zero();
+  grid.for_each_neighbour(
+      w, f.position,
+      [&](std::size_t j, const Vec3& r_wj, double r2) {
+        const double W = kernel.value(std::sqrt(r2));
+        weight += W;
+        moment += W * r_wj;
+        entries_.emplace_back(static_cast<int>(w), static_cast<int>(j), -W);
+      },
+      fluid_count);
+  const auto row = static_cast<int>(w);
+  if (weight <= 0.0) {
+    entries_.resize(first);
+    entries_.emplace_back(row, row, 1.0);
+    rhs_[row] = 0.0;
+    return;
+  }
+  for (std::size_t k = first; k < entries_.size(); ++k)
+    entries_[k] = Eigen::Triplet<double>(row, entries_[k].col(), entries_[k].value() / weight);
+  entries_.emplace_back(row, row, 1.0);
+  Vec3 relative_gravity = p.gravity;
+  if (f.body_acceleration != nullptr)
+    rhs_[row] = p.reference_density * relative_gravity.dot(moment) / weight;
+  rhs_[row] =
+      std::getenv("HT_NOG") ? 0.0 : p.reference_density * relative_gravity.dot(moment) / weight;
+}
+
+PressureSolve PressurePoisson::solve(Fields& f, std::size_t fluid_count, const CellGrid& grid,
+                                     const KernelTable& kernel, const KernelTable& gradient_kernel,
+                                     const Parameters& p, double dt) {
+  const std::size_t n = f.position.size();
+  entries_.clear();
+  rhs_.resize(static_cast<Eigen::Index>(n));
+  has_dirichlet_row_ = false;
+  for (std::size_t i = 0; i < fluid_count; ++i)
+    add_fluid_row(i, f, grid, gradient_kernel, p, dt);
+  for (std::size_t w = fluid_count; w < n; ++w)
+    add_wall_row(w, f, fluid_count, grid, kernel, p);
+  if (!has_dirichlet_row_ && fluid_count > 0) {
+    // The pressure is fixed up to a constant: pin the first fluid particle's.
+    std::erase_if(entries_, [](const Eigen::Triplet<double>& e) { return e.row() == 0; });
+    entries_.emplace_back(0, 0, 1.0);
+    rhs_[0] = 0.0;
+  }
+  matrix_.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+  matrix_.setFromTriplets(entries_.begin(), entries_.end());
+  solver_.compute(matrix_);
+  if (solution_.size() != rhs_.size())
+    solution_.setZero(rhs_.size());
+  for (std::size_t i = 0; i < n; ++i)
+    solution_[static_cast<Eigen::Index>(i)] = f.pressure[i];
+  solution_ = solver_.solveWithGuess(rhs_, solution_);
+  double mean = 0.0;
+  if (!has_dirichlet_row_) {
+    for (std::size_t i = 0; i < fluid_count; ++i)
+      mean += solution_[static_cast<Eigen::Index>(i)];
+    mean /= static_cast<double>(fluid_count);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    f.pressure[i] = solution_[static_cast<Eigen::Index>(i)] - mean;
+    f.density[i] = p.reference_density;
+  }
+  return {static_cast<int>(solver_.iterations()), solver_.error(),
+          solver_.info() == Eigen::Success};
+}
+
+void project_velocities(Fields& f, std::size_t fluid_count, const CellGrid& grid,
+                        const KernelTable& kernel, const Parameters& p, double dt) {
+  const double rho2 = p.reference_density * p.reference_density;
+  const auto n = static_cast<std::ptrdiff_t>(fluid_count);
+#pragma omp parallel for schedule(dynamic, 512)
+  for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
+    const auto i = static_cast<std::size_t>(ii);
+    Vec3 gradient = Vec3::Zero();  // grad p_i / rho0
+    grid.for_each_neighbour(i, f.position, [&](std::size_t j, const Vec3& r_ij, double r2) {
+      if (j == i)
+        return;
+      const double r = std::sqrt(r2);
+      gradient +=
+          (f.mass[j] * (f.pressure[i] + f.pressure[j]) / rho2 * kernel.derivative(r) / r) * r_ij;
+    });
+    f.velocity[i] -= dt * gradient;
+  }
+}
+
+}  // namespace partimix::sph

@@ -1,0 +1,56 @@
+#pragma once
+// The pressure Poisson equation of the incompressible (projection) scheme, docs/sph.md
+// "Incompressible SPH": one row per particle (fluid: the Laplacian of p / rho0 equals the
+// divergence of the predicted velocity over dt; fluid at a free surface: p = 0; wall: Adami's
+// extrapolation from the fluid), solved by Eigen's BiCGSTAB, and the projection of the velocity.
+#include <vector>
+
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCore>
+
+#include "particles/cell_grid.hpp"
+#include "sph/fields.hpp"
+#include "sph/kernel_table.hpp"
+#include "sph/parameters.hpp"
+
+namespace partimix::sph {
+
+struct PressureSolve {
+  int iterations = 0;
+  double residual = 0.0;  // relative
+  bool converged = false;
+};
+
+class PressurePoisson {
+ public:
+  PressurePoisson(double tolerance, int max_iterations);
+
+  // Fluid particles are [0, fluid_count) of the fields, with the predicted velocities and the
+  // grid built at their predicted positions; walls the rest, with their own velocities. Writes
+  // every particle's pressure (fluid and wall) and sets wall densities to rho0.
+  // `kernel` weighs the wall extrapolation, `gradient_kernel` the Laplacian and divergence.
+  PressureSolve solve(Fields& fields, std::size_t fluid_count, const CellGrid& grid,
+                      const KernelTable& kernel, const KernelTable& gradient_kernel,
+                      const Parameters& parameters, double dt);
+
+ private:
+  void add_fluid_row(std::size_t i, const Fields& f, const CellGrid& grid,
+                     const KernelTable& kernel, const Parameters& p, double dt);
+  void add_wall_row(std::size_t w, const Fields& f, std::size_t fluid_count, const CellGrid& grid,
+                    const KernelTable& kernel, const Parameters& p);
+
+  using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+  std::vector<Eigen::Triplet<double>> entries_;
+  Eigen::VectorXd rhs_;
+  Eigen::VectorXd solution_;
+  Matrix matrix_;
+  Eigen::BiCGSTAB<Matrix, Eigen::DiagonalPreconditioner<double>> solver_;
+  bool has_dirichlet_row_ = false;
+};
+
+// u_i -= dt sum_j m_j (p_i + p_j) / rho0^2 grad_i W_ij for the fluid particles (pressures of
+// this instant, grid at the current positions).
+void project_velocities(Fields& fields, std::size_t fluid_count, const CellGrid& grid,
+                        const KernelTable& kernel, const Parameters& parameters, double dt);
+
+}  // namespace partimix::sph
