@@ -10,6 +10,7 @@ namespace partimix::sph {
 
 struct TimeStepFactors {
   double cfl = 0.2;        // dt <= cfl * h / (c0 + |u|max)
+  double flow_cfl = 0.1;   // incompressible: dt <= flow_cfl * h / U
   double viscous = 0.125;  // dt <= viscous * h^2 / nu
   double force = 0.25;     // dt <= force * sqrt(h / |a|max)
 };
@@ -28,11 +29,13 @@ struct Shifting {
 };
 
 struct Config {
-  std::string scheme = "weakly_compressible";  // | incompressible (docs/sph.md)
-  double pressure_tolerance = 1e-6;            // incompressible: relative residual of the solve
-  int pressure_iterations = 1000;              // incompressible: BiCGSTAB iterations at most
-  double spacing = 0.0;                        // initial particle spacing dp [m]
-  double smoothing_ratio = 1.5;                // h / dp (docs/sph.md, "Choice of h")
+  std::string scheme = "weakly_compressible";      // | incompressible (docs/sph.md)
+  double pressure_tolerance = 1e-6;                // incompressible: relative residual of the solve
+  int pressure_iterations = 1000;                  // incompressible: BiCGSTAB iterations at most
+  std::string viscosity_integration = "explicit";  // | implicit (incompressible only)
+  int viscosity_iterations = 10;                   // implicit: Picard iterations at most
+  double spacing = 0.0;                            // initial particle spacing dp [m]
+  double smoothing_ratio = 1.5;                    // h / dp (docs/sph.md, "Choice of h")
   std::string kernel = "wendland_c2";
   std::string gradient_kernel;             // empty: the same as kernel
   std::string equation_of_state = "tait";  // tait | linear

@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <cstddef>
+
+#include <omp.h>
 #include <vector>
 
 namespace partimix::sph {
@@ -36,9 +38,10 @@ PressurePoisson::PressurePoisson(double tolerance, int max_iterations) {
 
 // Row i: (sum_j A_ij) p_i - sum_j A_ij p_j = -rho0 (div u*)_i / dt with
 // A_ij = -2 V_j (r_ij . grad_i W_ij) / (r_ij^2 + eta^2) >= 0, or p_i = 0 at a free surface.
-void PressurePoisson::add_fluid_row(std::size_t i, const Fields& f, const CellGrid& grid,
-                                    const KernelTable& kernel, const Parameters& p, double dt) {
-  const std::size_t first = entries_.size();
+bool PressurePoisson::add_fluid_row(std::size_t i, const Fields& f, const CellGrid& grid,
+                                    const KernelTable& kernel, const Parameters& p, double dt,
+                                    Entries& entries) {
+  const std::size_t first = entries.size();
   double diagonal = 0.0;
   double divergence = 0.0;
   double position_divergence = 0.0;
@@ -50,29 +53,29 @@ void PressurePoisson::add_fluid_row(std::size_t i, const Fields& f, const CellGr
     const double volume = f.mass[j] / p.reference_density;
     const double r_dot_grad = r_ij.dot(grad);
     const double a_ij = -2.0 * volume * r_dot_grad / (r2 + p.eta2);
-    entries_.emplace_back(static_cast<int>(i), static_cast<int>(j), -a_ij);
+    entries.emplace_back(static_cast<int>(i), static_cast<int>(j), -a_ij);
     diagonal += a_ij;
     divergence -= volume * relative_velocity(i, j, f, p, dt).dot(grad);
     position_divergence -= volume * r_dot_grad;
   });
   const auto row = static_cast<int>(i);
   if (position_divergence < kSurfaceDivergence * p.dimensions) {
-    entries_.resize(first);
-    entries_.emplace_back(row, row, 1.0);
+    entries.resize(first);
+    entries.emplace_back(row, row, 1.0);
     rhs_[row] = 0.0;
-    has_dirichlet_row_ = true;
-    return;
+    return true;
   }
-  entries_.emplace_back(row, row, diagonal);
+  entries.emplace_back(row, row, diagonal);
   rhs_[row] = -p.reference_density * divergence / dt;
+  return false;
 }
 
 // Row w: p_w - sum_f (W_wf / sum W) p_f = rho0 (g - a_w) . sum_f r_wf W_wf / sum W, or p_w = 0
 // without fluid around (Adami et al. 2012, eq. 27 with rho_f = rho0).
 void PressurePoisson::add_wall_row(std::size_t w, const Fields& f, std::size_t fluid_count,
                                    const CellGrid& grid, const KernelTable& kernel,
-                                   const Parameters& p) {
-  const std::size_t first = entries_.size();
+                                   const Parameters& p, Entries& entries) {
+  const std::size_t first = entries.size();
   double weight = 0.0;
   Vec3 moment = Vec3::Zero();
   grid.for_each_neighbour(
@@ -81,19 +84,19 @@ void PressurePoisson::add_wall_row(std::size_t w, const Fields& f, std::size_t f
         const double W = kernel.value(std::sqrt(r2));
         weight += W;
         moment += W * r_wj;
-        entries_.emplace_back(static_cast<int>(w), static_cast<int>(j), -W);
+        entries.emplace_back(static_cast<int>(w), static_cast<int>(j), -W);
       },
       fluid_count);
   const auto row = static_cast<int>(w);
   if (weight <= 0.0) {
-    entries_.resize(first);
-    entries_.emplace_back(row, row, 1.0);
+    entries.resize(first);
+    entries.emplace_back(row, row, 1.0);
     rhs_[row] = 0.0;
     return;
   }
-  for (std::size_t k = first; k < entries_.size(); ++k)
-    entries_[k] = Eigen::Triplet<double>(row, entries_[k].col(), entries_[k].value() / weight);
-  entries_.emplace_back(row, row, 1.0);
+  for (std::size_t k = first; k < entries.size(); ++k)
+    entries[k] = Eigen::Triplet<double>(row, entries[k].col(), entries[k].value() / weight);
+  entries.emplace_back(row, row, 1.0);
   Vec3 relative_gravity = p.gravity;
   if (f.body_acceleration != nullptr)
     rhs_[row] = p.reference_density * relative_gravity.dot(moment) / weight;
@@ -101,17 +104,38 @@ void PressurePoisson::add_wall_row(std::size_t w, const Fields& f, std::size_t f
       std::getenv("HT_NOG") ? 0.0 : p.reference_density * relative_gravity.dot(moment) / weight;
 }
 
-PressureSolve PressurePoisson::solve(Fields& f, std::size_t fluid_count, const CellGrid& grid,
-                                     const KernelTable& kernel, const KernelTable& gradient_kernel,
-                                     const Parameters& p, double dt) {
+// Rows in parallel, each thread into its own list, then gathered in one.
+void PressurePoisson::assemble(const Fields& f, std::size_t fluid_count, const CellGrid& grid,
+                               const KernelTable& kernel, const KernelTable& gradient_kernel,
+                               const Parameters& p, double dt) {
   const std::size_t n = f.position.size();
+  thread_entries_.resize(static_cast<std::size_t>(omp_get_max_threads()));
+  bool dirichlet = false;
+#pragma omp parallel reduction(|| : dirichlet)
+  {
+    Entries& local = thread_entries_[static_cast<std::size_t>(omp_get_thread_num())];
+    local.clear();
+#pragma omp for schedule(dynamic, 256)
+    for (std::ptrdiff_t ii = 0; ii < static_cast<std::ptrdiff_t>(n); ++ii) {
+      const auto i = static_cast<std::size_t>(ii);
+      if (i < fluid_count)
+        dirichlet = add_fluid_row(i, f, grid, gradient_kernel, p, dt, local) || dirichlet;
+      else
+        add_wall_row(i, f, fluid_count, grid, kernel, p, local);
+    }
+  }
+  has_dirichlet_row_ = dirichlet;
   entries_.clear();
+  for (const Entries& local : thread_entries_)
+    entries_.insert(entries_.end(), local.begin(), local.end());
+}
+
+LinearSolve PressurePoisson::solve(Fields& f, std::size_t fluid_count, const CellGrid& grid,
+                                   const KernelTable& kernel, const KernelTable& gradient_kernel,
+                                   const Parameters& p, double dt) {
+  const std::size_t n = f.position.size();
   rhs_.resize(static_cast<Eigen::Index>(n));
-  has_dirichlet_row_ = false;
-  for (std::size_t i = 0; i < fluid_count; ++i)
-    add_fluid_row(i, f, grid, gradient_kernel, p, dt);
-  for (std::size_t w = fluid_count; w < n; ++w)
-    add_wall_row(w, f, fluid_count, grid, kernel, p);
+  assemble(f, fluid_count, grid, kernel, gradient_kernel, p, dt);
   if (!has_dirichlet_row_ && fluid_count > 0) {
     // The pressure is fixed up to a constant: pin the first fluid particle's.
     std::erase_if(entries_, [](const Eigen::Triplet<double>& e) { return e.row() == 0; });

@@ -11,15 +11,10 @@
 #include "particles/cell_grid.hpp"
 #include "sph/fields.hpp"
 #include "sph/kernel_table.hpp"
+#include "sph/linear_solve.hpp"
 #include "sph/parameters.hpp"
 
 namespace partimix::sph {
-
-struct PressureSolve {
-  int iterations = 0;
-  double residual = 0.0;  // relative
-  bool converged = false;
-};
 
 class PressurePoisson {
  public:
@@ -29,18 +24,24 @@ class PressurePoisson {
   // grid built at their predicted positions; walls the rest, with their own velocities. Writes
   // every particle's pressure (fluid and wall) and sets wall densities to rho0.
   // `kernel` weighs the wall extrapolation, `gradient_kernel` the Laplacian and divergence.
-  PressureSolve solve(Fields& fields, std::size_t fluid_count, const CellGrid& grid,
-                      const KernelTable& kernel, const KernelTable& gradient_kernel,
-                      const Parameters& parameters, double dt);
+  LinearSolve solve(Fields& fields, std::size_t fluid_count, const CellGrid& grid,
+                    const KernelTable& kernel, const KernelTable& gradient_kernel,
+                    const Parameters& parameters, double dt);
 
  private:
-  void add_fluid_row(std::size_t i, const Fields& f, const CellGrid& grid,
-                     const KernelTable& kernel, const Parameters& p, double dt);
+  using Entries = std::vector<Eigen::Triplet<double>>;
+  // add_fluid_row returns true for a Dirichlet row (p = 0 at a free surface).
+  bool add_fluid_row(std::size_t i, const Fields& f, const CellGrid& grid,
+                     const KernelTable& kernel, const Parameters& p, double dt, Entries& entries);
   void add_wall_row(std::size_t w, const Fields& f, std::size_t fluid_count, const CellGrid& grid,
-                    const KernelTable& kernel, const Parameters& p);
+                    const KernelTable& kernel, const Parameters& p, Entries& entries);
+  void assemble(const Fields& f, std::size_t fluid_count, const CellGrid& grid,
+                const KernelTable& kernel, const KernelTable& gradient_kernel, const Parameters& p,
+                double dt);
 
   using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
-  std::vector<Eigen::Triplet<double>> entries_;
+  std::vector<Entries> thread_entries_;  // the rows each thread assembled
+  Entries entries_;
   Eigen::VectorXd rhs_;
   Eigen::VectorXd solution_;
   Matrix matrix_;

@@ -41,6 +41,7 @@ TimeStepFactors read_time_step(Reader& sph_section) {
   Reader section = sph_section.optional_map("time_step");
   TimeStepFactors factors;
   factors.cfl = section.optional<double>("cfl", factors.cfl, kPositive);
+  factors.flow_cfl = section.optional<double>("flow_cfl", factors.flow_cfl, kPositive);
   factors.viscous = section.optional<double>("viscous", factors.viscous, kPositive);
   factors.force = section.optional<double>("force", factors.force, kPositive);
   section.done();
@@ -107,6 +108,10 @@ Config read_config(Reader& root, const Domain& domain) {
       section.optional<double>("pressure_tolerance", config.pressure_tolerance, kPositive);
   config.pressure_iterations =
       section.optional<int>("pressure_iterations", config.pressure_iterations, at_least(1));
+  config.viscosity_integration = section.choice(
+      "viscosity_integration", config.viscosity_integration, {"explicit", "implicit"});
+  config.viscosity_iterations =
+      section.optional<int>("viscosity_iterations", config.viscosity_iterations, at_least(1));
   section.done();
   return config;
 }

@@ -44,8 +44,15 @@ DensityDiffusion diffusion_from(const std::string& name) {
 ViscousOperator viscous_operator_from(const Config& config, const FluidProperties& fluid) {
   if (!config.laminar_viscosity)
     return ViscousOperator::none;
+  const bool implicit = config.viscosity_integration == "implicit";
   if (config.viscous_operator == "auto") {
-    return fluid.rheology.model == "newtonian" ? ViscousOperator::morris : ViscousOperator::stress;
+    return fluid.rheology.model == "newtonian" || implicit ? ViscousOperator::morris
+                                                           : ViscousOperator::stress;
+  }
+  if (config.viscous_operator == "stress" && implicit) {
+    throw InputError(InputLocation{"", 0, 0, "sph.viscous_operator"},
+                     "implicit viscosity (sph.viscosity_integration) makes the Morris operator "
+                     "implicit; use viscous_operator morris or auto");
   }
   if (config.viscous_operator == "morris")
     return ViscousOperator::morris;
@@ -126,6 +133,14 @@ SphSolver::SphSolver(ParticleStore& store, const Domain& domain, const Config& c
   if (bodies_ != nullptr && bodies_->count() > 0) {
     body_force_ = &store_.add_vector("body_force", "N", false).values;
     body_couple_ = &store_.add_vector("body_couple", "N m", false).values;
+  }
+  if (config.viscosity_integration == "implicit") {
+    if (config.scheme != "incompressible") {
+      throw InputError(InputLocation{"", 0, 0, "sph.viscosity_integration"},
+                       "implicit viscosity needs sph.scheme: incompressible (the "
+                       "weakly-compressible step is bound by the sound speed anyway)");
+    }
+    viscous_.emplace(config.pressure_tolerance, config.pressure_iterations);
   }
   if (config.scheme == "incompressible") {
     poisson_.emplace(config.pressure_tolerance, config.pressure_iterations);
@@ -244,10 +259,10 @@ void SphSolver::update_viscosity() {
 double SphSolver::stable_dt() const {
   const TimeStepFactors& factors = config_.time_step;
   const double h = parameters_.h;
-  double dt = poisson_ ? factors.cfl * h / std::max(max_speed_, flow_speed_estimate_)
+  double dt = poisson_ ? factors.flow_cfl * h / std::max(max_speed_, flow_speed_estimate_)
                        : factors.cfl * h / (parameters_.sound_speed + max_speed_);
   const double nu = max_viscosity_ / parameters_.reference_density;
-  if (parameters_.viscous_operator != ViscousOperator::none && nu > 0.0) {
+  if (parameters_.viscous_operator != ViscousOperator::none && nu > 0.0 && !viscous_) {
     dt = std::min(dt, factors.viscous * h * h / nu);
   }
   if (max_acceleration_ > 0.0) {
@@ -299,34 +314,26 @@ void SphSolver::advance_weakly_compressible(double dt) {
   correct(dt);
 }
 
-// The projection step (docs/sph.md, "Incompressible SPH"): the rates of the viscous prediction
-// are taken at x^n without pressure, the wall state being that of the end of the last step; the
-// last step's pressures are the solve's first guess.
+// The projection step (docs/sph.md, "Incompressible SPH"): the viscous prediction at x^n, with
+// the wall state of the end of the last step, explicit or implicit; then the pressure solve and
+// the projection at x*.
 void SphSolver::advance_incompressible(double dt) {
-  scratch_.assign(fields_.pressure.begin(), fields_.pressure.end());  // the solve's first guess
-  std::fill(fields_.pressure.begin(), fields_.pressure.end(), 0.0);
-  compute_fluid_rates(fields_, fluid_count_, grid_, gradient_table_, parameters_);
-  std::copy(scratch_.begin(), scratch_.end(), fields_.pressure.begin());
-  start_position_.resize(fluid_count_);
-  start_velocity_.resize(fluid_count_);
-  for (std::size_t i = 0; i < fluid_count_; ++i) {
-    start_position_[i] = fields_.position[i];
-    start_velocity_[i] = fields_.velocity[i];
-    fields_.velocity[i] += dt * fields_.acceleration[i];
+  start_position_.assign(fields_.position.begin(),
+                         fields_.position.begin() + static_cast<std::ptrdiff_t>(fluid_count_));
+  start_velocity_.assign(fields_.velocity.begin(),
+                         fields_.velocity.begin() + static_cast<std::ptrdiff_t>(fluid_count_));
+  if (viscous_)
+    predict_viscous_implicit(dt);
+  else
+    predict_viscous_explicit(dt);
+  for (std::size_t i = 0; i < fluid_count_; ++i)
     fields_.position[i] += dt * fields_.velocity[i];
-  }
   wrap_positions();
   move_bodies(time_ + dt);
   grid_.build(fields_.position);
-  const PressureSolve solve = poisson_->solve(fields_, fluid_count_, grid_, kernel_table_,
-                                              gradient_table_, parameters_, dt);
-  if (!solve.converged) {
-    throw RunError(fmt::format(
-        "the pressure Poisson equation did not converge at t = {:.6g} s: relative residual {:.3g} "
-        "after {} iterations (sph.pressure_tolerance {:.3g}, sph.pressure_iterations {})",
-        time_, solve.residual, solve.iterations, config_.pressure_tolerance,
-        config_.pressure_iterations));
-  }
+  stop_unless_converged(poisson_->solve(fields_, fluid_count_, grid_, kernel_table_,
+                                        gradient_table_, parameters_, dt),
+                        "the pressure Poisson equation");
   project_velocities(fields_, fluid_count_, grid_, gradient_table_, parameters_, dt);
   for (std::size_t i = 0; i < fluid_count_; ++i) {
     fields_.acceleration[i] = (fields_.velocity[i] - start_velocity_[i]) / dt;
@@ -336,20 +343,71 @@ void SphSolver::advance_incompressible(double dt) {
   wrap_positions();
 }
 
+// A failed solve stops the run with its residual (docs/sph.md, "Incompressible SPH").
+void SphSolver::stop_unless_converged(const LinearSolve& solve, std::string_view what) const {
+  if (solve.converged)
+    return;
+  throw RunError(fmt::format(
+      "{} did not converge at t = {:.6g} s: relative residual {:.3g} after {} iterations "
+      "(sph.pressure_tolerance {:.3g}, sph.pressure_iterations {})",
+      what, time_, solve.residual, solve.iterations, config_.pressure_tolerance,
+      config_.pressure_iterations));
+}
+
+// u* = u^n + dt (a_visc + g), the rates at x^n without pressure; the last step's pressures are
+// kept as the pressure solve's first guess.
+void SphSolver::predict_viscous_explicit(double dt) {
+  scratch_.assign(fields_.pressure.begin(), fields_.pressure.end());
+  std::fill(fields_.pressure.begin(), fields_.pressure.end(), 0.0);
+  compute_fluid_rates(fields_, fluid_count_, grid_, gradient_table_, parameters_);
+  std::copy(scratch_.begin(), scratch_.end(), fields_.pressure.begin());
+  for (std::size_t i = 0; i < fluid_count_; ++i)
+    fields_.velocity[i] += dt * fields_.acceleration[i];
+}
+
+// Backward Euler (docs/sph.md, "Implicit viscosity"), with Picard iteration on the apparent
+// viscosity of a non-Newtonian fluid until no particle's changes by more than 1%.
+void SphSolver::predict_viscous_implicit(double dt) {
+  for (int iteration = 0; iteration < config_.viscosity_iterations; ++iteration) {
+    stop_unless_converged(viscous_->solve(fields_, fluid_count_, grid_, gradient_table_,
+                                          parameters_, start_velocity_, dt),
+                          "the implicit viscosity solve");
+    if (newtonian_ || !update_apparent_viscosity())
+      return;
+  }
+}
+
+// Apparent viscosities from the shear rates of the current velocities; true when one changed by
+// more than 1%.
+bool SphSolver::update_apparent_viscosity() {
+  compute_shear_rates(fields_, fluid_count_, grid_, gradient_table_, domain_.dimensions,
+                      config_.corrected_velocity_gradient);
+  bool changed = false;
+  double largest = 0.0;
+  for (std::size_t i = 0; i < fluid_count_; ++i) {
+    const double updated = rheology_.viscosity(fields_.shear_rate[i]);
+    changed = changed || std::abs(updated - fields_.viscosity[i]) > 0.01 * fields_.viscosity[i];
+    fields_.viscosity[i] = updated;
+    largest = std::max(largest, updated);
+  }
+  max_viscosity_ = largest;
+  return changed;
+}
+
 // The state at the end of an incompressible step: wall ghost velocities and pressures, apparent
-// viscosities, the extremes of the time step.
+// viscosities, the extremes of the time step. The force limit sees gravity alone: the pressure
+// acts through the projection, the viscous term is bound by its own limit or implicit, and the
+// velocity change of a step, which also holds the projection's correction of the particles'
+// disorder, held the vessel's step to a quarter of the flow-speed one (docs/sph.md).
 void SphSolver::refresh_incompressible() {
   grid_.build(fields_.position);
   update_wall_state(fields_, fluid_count_, grid_, kernel_table_, *eos_, parameters_);
   update_viscosity();
   double max_speed2 = 0.0;
-  double max_acceleration2 = 0.0;
-  for (std::size_t i = 0; i < fluid_count_; ++i) {
+  for (std::size_t i = 0; i < fluid_count_; ++i)
     max_speed2 = std::max(max_speed2, fields_.velocity[i].squaredNorm());
-    max_acceleration2 = std::max(max_acceleration2, fields_.acceleration[i].squaredNorm());
-  }
   max_speed_ = std::sqrt(max_speed2);
-  max_acceleration_ = std::sqrt(max_acceleration2);
+  max_acceleration_ = parameters_.gravity.norm();
 }
 
 void SphSolver::shift_particles_after_step(double dt) {

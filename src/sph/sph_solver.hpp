@@ -14,6 +14,7 @@
 #include "sph/config.hpp"
 #include "sph/equation_of_state.hpp"
 #include "sph/fields.hpp"
+#include "sph/implicit_viscosity.hpp"
 #include "sph/kernel.hpp"
 #include "sph/kernel_table.hpp"
 #include "sph/parameters.hpp"
@@ -58,6 +59,10 @@ class SphSolver final : public Solver {
   void advance_weakly_compressible(double dt);
   void advance_incompressible(double dt);
   void refresh_incompressible();
+  void predict_viscous_explicit(double dt);
+  void predict_viscous_implicit(double dt);
+  bool update_apparent_viscosity();
+  void stop_unless_converged(const LinearSolve& solve, std::string_view what) const;
   void shift_particles_after_step(double dt);
   void wrap_positions();
   void move_bodies(double time);
@@ -95,8 +100,9 @@ class SphSolver final : public Solver {
   ShiftingScratch shifting_;
   // The incompressible scheme's pressure solve; absent for the weakly-compressible one.
   std::optional<PressurePoisson> poisson_;
-  double flow_speed_estimate_ = 0.0;         // U of the incompressible time step [m/s]
-  std::vector<Vec3>* body_force_ = nullptr;  // store fields, when there are bodies
+  std::optional<ImplicitViscosity> viscous_;  // with sph.viscosity_integration: implicit
+  double flow_speed_estimate_ = 0.0;          // U of the incompressible time step [m/s]
+  std::vector<Vec3>* body_force_ = nullptr;   // store fields, when there are bodies
   std::vector<Vec3>* body_couple_ = nullptr;
 };
 

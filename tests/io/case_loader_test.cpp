@@ -36,6 +36,8 @@ sph:
   scheme: incompressible
   pressure_tolerance: 1.0e-8
   pressure_iterations: 300
+  viscosity_integration: implicit
+  viscosity_iterations: 4
   artificial_viscosity: 0.02
   laminar_viscosity: false
   viscous_operator: stress
@@ -48,6 +50,7 @@ sph:
   negative_wall_pressure: true
   time_step:
     cfl: 0.3
+    flow_cfl: 0.05
     viscous: 0.1
     force: 0.2
   sort_interval: 10
@@ -137,6 +140,8 @@ TEST(CaseLoader, Full2DCaseHasTheSphSettingsWritten) {
   EXPECT_EQ(sph.scheme, "incompressible");
   EXPECT_DOUBLE_EQ(sph.pressure_tolerance, 1.0e-8);
   EXPECT_EQ(sph.pressure_iterations, 300);
+  EXPECT_EQ(sph.viscosity_integration, "implicit");
+  EXPECT_EQ(sph.viscosity_iterations, 4);
   EXPECT_DOUBLE_EQ(sph.artificial_viscosity, 0.02);
   EXPECT_FALSE(sph.laminar_viscosity);
   EXPECT_EQ(sph.viscous_operator, "stress");
@@ -147,6 +152,7 @@ TEST(CaseLoader, Full2DCaseHasTheSphSettingsWritten) {
   EXPECT_EQ(sph.wall_layers, 4);
   EXPECT_TRUE(sph.negative_wall_pressure);
   EXPECT_DOUBLE_EQ(sph.time_step.cfl, 0.3);
+  EXPECT_DOUBLE_EQ(sph.time_step.flow_cfl, 0.05);
   EXPECT_DOUBLE_EQ(sph.time_step.viscous, 0.1);
   EXPECT_DOUBLE_EQ(sph.time_step.force, 0.2);
   EXPECT_EQ(sph.sort_interval, 10);

@@ -9,11 +9,12 @@
 //   low: docs/sph.md, "Viscosity"), and the L2 velocity error at 2 s below 5% of U e^(b t).
 //   Measured: -0.1% and 2.8%; without shifting the particles cluster at the stagnation points
 //   and the vortex loses 30% of its speed by t = 0.4 s (L2 error 0.59 at 2 s; docs/sph.md).
-// - Incompressible (projection), dt = 0.2 h / U, 11 times the weakly-compressible step. Asserted:
-//   the rate within 4% and the L2 error below 5%. Measured: -2.9% and 3.6%. The decay is slower
-//   than the weakly-compressible one and, unexplained so far, more so with a smaller step (-4.4%
-//   and 4.8% at dt = 0.1 h / U; docs/sph.md, "Incompressible SPH"); without shifting the
-//   projection blows up by t = 0.14 s.
+// - Incompressible (projection), dt = 0.1 h / U, five times the weakly-compressible step.
+//   Asserted: the rate within 5% and the L2 error below 6%. Measured: -4.4% and 4.8%, the same
+//   at dt = 0.05 h / U (-4.2%, 4.5%), so converged in the step: the projection's particles are
+//   less regular than the weakly-compressible ones (stronger shifting, A = 8, gives -2.9% and
+//   2.7%), and the Morris term dissipates more on them; docs/sph.md, "Incompressible SPH".
+//   Without shifting the projection blows up by t = 0.14 s.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -133,8 +134,8 @@ TEST(TaylorGreen, DecaysAtTheAnalyticalRateWithShifting) {
 
 TEST(TaylorGreen, DecaysAtTheAnalyticalRateIncompressible) {
   const Decay shifted = run_vortex("incompressible", "fickian");
-  EXPECT_NEAR(shifted.rate / kDecay, 1.0, 0.04);
-  EXPECT_LT(shifted.l2_error, 0.05);
+  EXPECT_NEAR(shifted.rate / kDecay, 1.0, 0.05);
+  EXPECT_LT(shifted.l2_error, 0.06);
 }
 
 }  // namespace
