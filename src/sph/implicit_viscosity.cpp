@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sph/pair_rates.hpp"
+
 namespace partimix::sph {
 
 ImplicitViscosity::ImplicitViscosity(double tolerance, int max_iterations) {
@@ -26,8 +28,7 @@ void ImplicitViscosity::add_row(std::size_t i, const Fields& f, std::size_t flui
     const double r_dot_grad = r * kernel.derivative(r);
     const bool fluid_j = j < fluid_count;
     const double eta_j = fluid_j ? f.viscosity[j] : eta_i;
-    const double eta_sum =
-        p.harmonic_viscosity_mean ? 4.0 * eta_i * eta_j / (eta_i + eta_j) : eta_i + eta_j;
+    const double eta_sum = pair_viscosity(eta_i, eta_j, p);
     const double c_ij = f.mass[j] * eta_sum * -r_dot_grad / (rho2 * (r2 + p.eta2));
     diagonal += dt * c_ij;
     if (fluid_j)

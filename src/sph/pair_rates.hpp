@@ -40,6 +40,12 @@ inline PairCentre pair_centre(std::size_t i, const Fields& f, const Parameters& 
   return c;
 }
 
+// Twice the pair's mean viscosity in the Morris term: eta_i + eta_j, or the harmonic
+// 4 eta_i eta_j / (eta_i + eta_j) (sph.viscosity_mean).
+inline double pair_viscosity(double eta_i, double eta_j, const Parameters& p) {
+  return p.harmonic_viscosity_mean ? 4.0 * eta_i * eta_j / (eta_i + eta_j) : eta_i + eta_j;
+}
+
 // r_ij = x_i - x_j, r2 = |r_ij|^2 > 0.
 inline PairRates pair_rates(const PairCentre& i, std::size_t j, const Vec3& r_ij, double r2,
                             const Fields& f, const KernelTable& kernel, const Parameters& p) {
@@ -60,8 +66,7 @@ inline PairRates pair_rates(const PairCentre& i, std::size_t j, const Vec3& r_ij
     // harmonic); a wall takes the viscosity of i.
     const double eta_i = i.viscosity;
     const double eta_j = fluid_j ? f.viscosity[j] : eta_i;
-    const double eta_sum =
-        p.harmonic_viscosity_mean ? 4.0 * eta_i * eta_j / (eta_i + eta_j) : eta_i + eta_j;
+    const double eta_sum = pair_viscosity(eta_i, eta_j, p);
     rates.acceleration +=
         (m_j * eta_sum * r_dot_grad / (rho_i * rho_j * (r2 + p.eta2))) * v_ij_viscous;
   }

@@ -11,8 +11,6 @@ namespace {
 // Monaghan's (2000) artificial-pressure weights R (W_ij / W(dp))^n with R = 0.2, n = 4.
 constexpr double kPairWeight = 0.2;
 constexpr double kLargestShiftInSpacings = 0.1;
-// A fluid particle whose position divergence is below this part of d lies at a free surface.
-constexpr double kSurfaceDivergence = 0.75;
 
 // The unit outward normal of a free surface at a particle: against the plain concentration
 // gradient; zero where that vanishes.
@@ -73,7 +71,6 @@ void shift_particles(Fields& f, std::size_t fluid_count, const CellGrid& grid,
   scratch.normal.resize(fluid_count);
   scratch.surface.resize(fluid_count);
   const double diffusion = settings.coefficient * p.h * settings.speed * dt;
-  const double surface_divergence = kSurfaceDivergence * p.dimensions;
   const auto n = static_cast<std::ptrdiff_t>(fluid_count);
 #pragma omp parallel for schedule(dynamic, 512)
   for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
@@ -81,7 +78,7 @@ void shift_particles(Fields& f, std::size_t fluid_count, const CellGrid& grid,
     const Concentration c = concentration_of(i, f, grid, kernel, p);
     scratch.shift[i] = -diffusion * c.gradient;
     scratch.normal[i] = outward_normal(c);
-    scratch.surface[i] = c.position_divergence < surface_divergence ? 1 : 0;
+    scratch.surface[i] = at_free_surface(c.position_divergence, p.dimensions) ? 1 : 0;
   }
   const double largest = kLargestShiftInSpacings * p.spacing;
 #pragma omp parallel for schedule(dynamic, 512)

@@ -20,6 +20,13 @@ struct Concentration {
   double position_divergence = 0.0;    // div r_i: d in the bulk, about d / 2 at a surface
 };
 
+// A fluid particle lies at a free surface when its position divergence is below 0.75 d (d in the
+// bulk; Lind et al. 2012 use 1.5 in 2D): the shifting and the pressure equation's Dirichlet rows
+// share it (docs/sph.md, "Particle shifting").
+inline bool at_free_surface(double position_divergence, int dimensions) {
+  return position_divergence < 0.75 * dimensions;
+}
+
 // The sums over fluid and wall neighbours j of fluid particle i (grid built at the current
 // positions, wall densities set).
 Concentration concentration_of(std::size_t i, const Fields& fields, const CellGrid& grid,

@@ -1,5 +1,7 @@
 #include "sph/pressure_poisson.hpp"
 
+#include "sph/particle_shifting.hpp"
+
 #include <cmath>
 #include <cstddef>
 
@@ -9,10 +11,6 @@
 namespace partimix::sph {
 
 namespace {
-
-// A fluid particle whose position divergence is below this part of d lies at a free surface
-// (the criterion of the particle shifting, docs/sph.md).
-constexpr double kSurfaceDivergence = 0.75;
 
 // u*_i - u_j; against a wall, less the velocity dt (g - a_w) that gravity and the wall's own
 // acceleration gave the fluid in this step: the wall's extrapolated pressure (its row) already
@@ -59,7 +57,7 @@ bool PressurePoisson::add_fluid_row(std::size_t i, const Fields& f, const CellGr
     position_divergence -= volume * r_dot_grad;
   });
   const auto row = static_cast<int>(i);
-  if (position_divergence < kSurfaceDivergence * p.dimensions) {
+  if (at_free_surface(position_divergence, p.dimensions)) {
     entries.resize(first);
     entries.emplace_back(row, row, 1.0);
     rhs_[row] = 0.0;
