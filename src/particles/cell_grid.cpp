@@ -14,7 +14,7 @@ namespace partimix {
 namespace {
 
 // At most this many cells, whatever the domain's size: a large domain gets larger cells (still
-// at least one interaction radius wide), so the grid's memory is bounded (4 bytes per cell).
+// at least radius / kReach wide), so the grid's memory is bounded (4 bytes per cell).
 constexpr double kMaxCells = 1 << 24;
 
 constexpr const char* kAxisNames[] = {"x", "y", "z"};
@@ -29,9 +29,9 @@ CellGrid::CellGrid(const Domain& domain, double radius) : domain_(domain), radiu
   std::array<double, 3> wanted{1.0, 1.0, 1.0};
   double total = 1.0;
   for (int axis = 0; axis < domain.dimensions; ++axis) {
-    wanted[axis] = std::max(1.0, std::floor(length[axis] / radius));
+    wanted[axis] = std::max(1.0, std::floor(kReach * length[axis] / radius));
     total *= wanted[axis];
-    if (domain.periodic[axis] && wanted[axis] < 3.0) {
+    if (domain.periodic[axis] && length[axis] < 3.0 * radius) {
       throw InputError(
           InputLocation{"", 0, 0, "domain.periodic"},
           fmt::format("the periodic axis {} is {:.6g} m long; it must be at least three "
@@ -44,7 +44,7 @@ CellGrid::CellGrid(const Domain& domain, double radius) : domain_(domain), radiu
   cell_size_ = length;
   periodic_length_ = length;
   for (int axis = 0; axis < domain.dimensions; ++axis) {
-    const double floor_cells = domain.periodic[axis] ? 3.0 : 1.0;
+    const double floor_cells = domain.periodic[axis] ? 2.0 * kReach + 1.0 : 1.0;
     cells_[axis] = static_cast<int>(std::max(floor_cells, std::floor(wanted[axis] * shrink)));
     cell_size_[axis] = length[axis] / cells_[axis];
   }

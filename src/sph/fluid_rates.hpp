@@ -4,7 +4,9 @@
 // Fourtakas et al. 2019), pressure gradient (seed eq. 14 with sigma = -p I), laminar viscosity
 // as the Morris term (seed eq. 17) or the divergence of the viscous stress (seed eqs. 14-15),
 // and Monaghan artificial viscosity (seed eqs. 18-19).
-#include "particles/cell_grid.hpp"
+#include <vector>
+
+#include "particles/neighbour_list.hpp"
 #include "sph/fields.hpp"
 #include "sph/kernel_table.hpp"
 #include "sph/parameters.hpp"
@@ -16,10 +18,20 @@ struct RateExtremes {
   double max_speed = 0.0;         // over fluid particles [m/s]
 };
 
+// Each thread's share of the rates of the fluid particles it was given as partners, reduced in
+// thread order (DESIGN.md, "Data and speed": results depend on the thread count by round-off
+// only). Kept between calls so that the rates do not allocate.
+struct RateBuffers {
+  std::vector<std::vector<Vec3>> acceleration;
+  std::vector<std::vector<double>> density_rate;
+};
+
 // Needs pressures of all particles, the wall state and (stress form) the viscous stresses of
-// this instant. Fluid particles are
-// [0, fluid_count) of the fields.
-RateExtremes compute_fluid_rates(Fields& fields, std::size_t fluid_count, const CellGrid& grid,
-                                 const KernelTable& gradient_kernel, const Parameters& parameters);
+// this instant, and `list` up to date for the current positions with count = split =
+// fluid_count: fluid particles are [0, fluid_count) of the fields. Each fluid pair is computed
+// once and given to both.
+RateExtremes compute_fluid_rates(Fields& fields, std::size_t fluid_count, const NeighbourList& list,
+                                 const KernelTable& gradient_kernel, const Parameters& parameters,
+                                 RateBuffers& buffers);
 
 }  // namespace partimix::sph

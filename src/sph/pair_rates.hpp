@@ -1,8 +1,12 @@
 #pragma once
-// The contribution of one neighbour j to the density rate and acceleration of fluid particle i
-// (docs/sph.md, "Discrete equations"). Shared by the fluid rates, which sum it over all
-// neighbours of i, and the wall loads, which sum -m_i times its acceleration over the fluid
-// neighbours of a wall particle j (docs/mixing-power.md, seed eq. 23).
+// The pair terms of the density rate and acceleration of fluid particles (docs/sph.md,
+// "Discrete equations"). A fluid pair's terms are computed once and given to both particles
+// (fluid_pair_terms, used by the fluid rates over a half neighbour list); a fluid particle's
+// wall neighbours act on it alone (wall_pair_rates, used by the fluid rates and by the wall
+// loads, which sum -m_i times it over the fluid neighbours of a wall particle: docs/mixing-
+// power.md, seed eq. 23). Both are written with F = (dW/dr) / r, grad_i W_ij = F r_ij, so that
+// a pair costs one division for the kernel and one for each viscous term (docs/performance.md).
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 
@@ -21,6 +25,7 @@ struct PairRates {
 struct PairCentre {
   std::size_t index = 0;
   double density = 0.0;
+  double inverse_density = 0.0;
   double p_over_rho2 = 0.0;
   double viscosity = 0.0;
   Vec3 velocity = Vec3::Zero();
@@ -32,11 +37,12 @@ inline PairCentre pair_centre(std::size_t i, const Fields& f, const Parameters& 
   PairCentre c;
   c.index = i;
   c.density = rho_i;
-  c.p_over_rho2 = f.pressure[i] / (rho_i * rho_i);
+  c.inverse_density = 1.0 / rho_i;
+  c.p_over_rho2 = f.pressure[i] * c.inverse_density * c.inverse_density;
   c.viscosity = f.viscosity[i];
   c.velocity = f.velocity[i];
   if (p.viscous_operator == ViscousOperator::stress)
-    c.tau_over_rho2 = f.viscous_stress[i] / (rho_i * rho_i);
+    c.tau_over_rho2 = f.viscous_stress[i] * (c.inverse_density * c.inverse_density);
   return c;
 }
 
@@ -46,48 +52,94 @@ inline double pair_viscosity(double eta_i, double eta_j, const Parameters& p) {
   return p.harmonic_viscosity_mean ? 4.0 * eta_i * eta_j / (eta_i + eta_j) : eta_i + eta_j;
 }
 
-// r_ij = x_i - x_j, r2 = |r_ij|^2 > 0.
-inline PairRates pair_rates(const PairCentre& i, std::size_t j, const Vec3& r_ij, double r2,
-                            const Fields& f, const KernelTable& kernel, const Parameters& p) {
+// The Monaghan (1992) artificial viscosity Pi_ij = -alpha c0 mu_ij / rho_mean with
+// mu_ij = h min(v_ij . r_ij, 0) / (r2 + eta2): zero for receding pairs, without a branch.
+inline double artificial_viscosity(double approach, double r2, double rho_i, double rho_j,
+                                   const Parameters& p) {
+  return -p.artificial_viscosity * p.sound_speed * p.h * std::min(approach, 0.0) /
+         ((r2 + p.eta2) * 0.5 * (rho_i + rho_j));
+}
+
+// What fluid particles i and j share: with it, a_i += m_j A, a_j -= m_i A,
+// drho_i += m_j s + V_j d and drho_j += m_i s - V_i d (V = m / rho).
+struct SharedPairTerms {
+  Vec3 acceleration = Vec3::Zero();  // A
+  double density_rate = 0.0;         // s = v_ij . grad_i W_ij
+  double diffusion = 0.0;            // d, the delta-SPH term per neighbour volume
+};
+
+// Fluid particles i (its centre) and j: r_ij = x_i - x_j, 0 < r2 = |r_ij|^2,
+// inverse_density_j = 1 / rho_j.
+[[gnu::always_inline]] inline SharedPairTerms fluid_pair_terms(
+    const PairCentre& i, std::size_t j, const Vec3& r_ij, double r2, double inverse_density_j,
+    const Fields& f, const KernelTable& kernel, const Parameters& p) {
   const double r = std::sqrt(r2);
-  const Vec3 grad = (kernel.derivative(r) / r) * r_ij;  // grad_i W_ij
-  const double r_dot_grad = r_ij.dot(grad);
-  const double rho_i = i.density;
+  const double gradient_factor = kernel.derivative(r) / r;  // F
+  const Vec3 grad = gradient_factor * r_ij;                 // grad_i W_ij
   const double rho_j = f.density[j];
-  const double m_j = f.mass[j];
-  const bool fluid_j = is_fluid(f.kind[j]);
   const Vec3 v_ij = i.velocity - f.velocity[j];
-  PairRates rates;
-  rates.density_rate = m_j * v_ij.dot(grad);
-  rates.acceleration = -(m_j * (i.p_over_rho2 + f.pressure[j] / (rho_j * rho_j))) * grad;
-  const Vec3 v_ij_viscous = fluid_j ? v_ij : Vec3(i.velocity - f.wall_velocity[j]);
+  SharedPairTerms terms;
+  terms.density_rate = v_ij.dot(grad);
+  const double p_over_rho2_j = f.pressure[j] * inverse_density_j * inverse_density_j;
+  terms.acceleration = -(i.p_over_rho2 + p_over_rho2_j) * grad;
   if (p.viscous_operator != ViscousOperator::none) {
     // Morris et al. (1997), eq. 8 with twice the pair's mean viscosity (arithmetic or
-    // harmonic); a wall takes the viscosity of i.
-    const double eta_i = i.viscosity;
-    const double eta_j = fluid_j ? f.viscosity[j] : eta_i;
-    const double eta_sum = pair_viscosity(eta_i, eta_j, p);
-    rates.acceleration +=
-        (m_j * eta_sum * r_dot_grad / (rho_i * rho_j * (r2 + p.eta2))) * v_ij_viscous;
+    // harmonic), r_ij . grad = F r2.
+    const double eta_sum = pair_viscosity(i.viscosity, f.viscosity[j], p);
+    terms.acceleration +=
+        (i.inverse_density * inverse_density_j * eta_sum * gradient_factor * r2 / (r2 + p.eta2)) *
+        v_ij;
   }
   if (p.viscous_operator == ViscousOperator::stress) {
-    rates.acceleration += m_j * (i.tau_over_rho2 + f.viscous_stress[j] / (rho_j * rho_j)) * grad;
+    terms.acceleration +=
+        (i.tau_over_rho2 + f.viscous_stress[j] * (inverse_density_j * inverse_density_j)) * grad;
   }
-  const double approach = v_ij_viscous.dot(r_ij);
-  if (p.artificial_viscosity > 0.0 && approach < 0.0) {
-    const double mu_ij = p.h * approach / (r2 + p.eta2);
-    const double pi_ij = -p.artificial_viscosity * p.sound_speed * mu_ij / (0.5 * (rho_i + rho_j));
-    rates.acceleration -= (m_j * pi_ij) * grad;
-  }
-  if (p.diffusion != DensityDiffusion::none && fluid_j) {
-    double difference = rho_j - rho_i;
+  if (p.artificial_viscosity > 0.0)
+    terms.acceleration -= artificial_viscosity(v_ij.dot(r_ij), r2, i.density, rho_j, p) * grad;
+  if (p.diffusion != DensityDiffusion::none) {
+    double difference = rho_j - i.density;
     if (p.diffusion == DensityDiffusion::fourtakas) {
       difference +=
           p.reference_density * p.hydrostatic_gravity.dot(r_ij) / (p.sound_speed * p.sound_speed);
     }
-    const double diffusion_factor = 2.0 * p.delta * p.h * p.sound_speed;
-    rates.density_rate += diffusion_factor * difference * (-r_dot_grad / r2) * (m_j / rho_j);
+    // docs/sph.md, "Density diffusion", with r_ij . grad_i W_ij / r2 = F.
+    terms.diffusion = 2.0 * p.delta * p.h * p.sound_speed * difference * (-gradient_factor);
   }
+  return terms;
+}
+
+// Fluid particle i (its centre) and wall particle w: the wall's velocity in the continuity
+// term, its no-slip ghost velocity in the viscous terms, the viscosity of i, no diffusion.
+[[gnu::always_inline]] inline PairRates wall_pair_rates(const PairCentre& i, std::size_t w,
+                                                        const Vec3& r_iw, double r2,
+                                                        double inverse_density_w, const Fields& f,
+                                                        const KernelTable& kernel,
+                                                        const Parameters& p) {
+  const double r = std::sqrt(r2);
+  const double gradient_factor = kernel.derivative(r) / r;
+  const Vec3 grad = gradient_factor * r_iw;
+  const double m_w = f.mass[w];
+  const Vec3 v_iw = i.velocity - f.velocity[w];
+  const Vec3 v_iw_viscous = i.velocity - f.wall_velocity[w];
+  PairRates rates;
+  rates.density_rate = m_w * v_iw.dot(grad);
+  const double p_over_rho2_w = f.pressure[w] * inverse_density_w * inverse_density_w;
+  Vec3 acceleration = -(i.p_over_rho2 + p_over_rho2_w) * grad;
+  if (p.viscous_operator != ViscousOperator::none) {
+    const double eta_sum = pair_viscosity(i.viscosity, i.viscosity, p);
+    acceleration +=
+        (i.inverse_density * inverse_density_w * eta_sum * gradient_factor * r2 / (r2 + p.eta2)) *
+        v_iw_viscous;
+  }
+  if (p.viscous_operator == ViscousOperator::stress) {
+    acceleration +=
+        (i.tau_over_rho2 + f.viscous_stress[w] * (inverse_density_w * inverse_density_w)) * grad;
+  }
+  if (p.artificial_viscosity > 0.0) {
+    acceleration -=
+        artificial_viscosity(v_iw_viscous.dot(r_iw), r2, i.density, f.density[w], p) * grad;
+  }
+  rates.acceleration = m_w * acceleration;
   return rates;
 }
 

@@ -21,6 +21,10 @@
 namespace partimix::sph {
 namespace {
 
+// Skin of the neighbour list as a fraction of the kernel support: a larger skin rebuilds less
+// often but evaluates more pairs beyond the support (docs/performance.md, "Neighbour lists").
+constexpr double kNeighbourSkin = 0.1;
+
 std::unique_ptr<Kernel> make_kernel(const std::string& name, const std::string& key) {
   auto kernel = kernel_registry().create(name);
   if (!kernel)
@@ -121,6 +125,8 @@ SphSolver::SphSolver(ParticleStore& store, const Domain& domain, const Config& c
       kernel_table_(*kernel_, parameters_.h, domain.dimensions),
       gradient_table_(*gradient_kernel_, parameters_.h, domain.dimensions),
       grid_(domain, std::max(kernel_table_.support_radius(), gradient_table_.support_radius())),
+      neighbours_(domain, gradient_table_.support_radius(),
+                  kNeighbourSkin * gradient_table_.support_radius()),
       bodies_(bodies),
       rheology_(fluid.rheology),
       newtonian_(fluid.rheology.model == "newtonian") {
@@ -217,6 +223,7 @@ void SphSolver::sort_by_cell() {
     sort_order_[store_.is_fluid(i) ? next_fluid++ : next_wall++] = i;
   }
   store_.reorder(sort_order_);
+  neighbours_.invalidate();
 }
 
 void SphSolver::interact() {
@@ -226,10 +233,15 @@ void SphSolver::interact() {
   }
   update_wall_state(fields_, fluid_count_, grid_, kernel_table_, *eos_, parameters_);
   update_viscosity();
-  const RateExtremes extremes =
-      compute_fluid_rates(fields_, fluid_count_, grid_, gradient_table_, parameters_);
+  const RateExtremes extremes = fluid_rates();
   max_acceleration_ = extremes.max_acceleration;
   max_speed_ = extremes.max_speed;
+}
+
+RateExtremes SphSolver::fluid_rates() {
+  neighbours_.update(fields_.position, fluid_count_, fluid_count_);
+  return compute_fluid_rates(fields_, fluid_count_, neighbours_, gradient_table_, parameters_,
+                             rate_buffers_);
 }
 
 // Apparent viscosity of each fluid particle from its shear rate (docs/rheology.md), and the
@@ -359,7 +371,7 @@ void SphSolver::stop_unless_converged(const LinearSolve& solve, std::string_view
 void SphSolver::predict_viscous_explicit(double dt) {
   scratch_.assign(fields_.pressure.begin(), fields_.pressure.end());
   std::fill(fields_.pressure.begin(), fields_.pressure.end(), 0.0);
-  compute_fluid_rates(fields_, fluid_count_, grid_, gradient_table_, parameters_);
+  fluid_rates();
   std::copy(scratch_.begin(), scratch_.end(), fields_.pressure.begin());
   for (std::size_t i = 0; i < fluid_count_; ++i)
     fields_.velocity[i] += dt * fields_.acceleration[i];

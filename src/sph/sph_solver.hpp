@@ -10,10 +10,12 @@
 #include "geometry/moving_bodies.hpp"
 #include "materials/rheology.hpp"
 #include "particles/cell_grid.hpp"
+#include "particles/neighbour_list.hpp"
 #include "particles/solver.hpp"
 #include "sph/config.hpp"
 #include "sph/equation_of_state.hpp"
 #include "sph/fields.hpp"
+#include "sph/fluid_rates.hpp"
 #include "sph/implicit_viscosity.hpp"
 #include "sph/kernel.hpp"
 #include "sph/kernel_table.hpp"
@@ -54,6 +56,7 @@ class SphSolver final : public Solver {
  private:
   void initialise_fluid();
   void interact();
+  RateExtremes fluid_rates();
   void predict(double dt);
   void correct(double dt);
   void advance_weakly_compressible(double dt);
@@ -81,6 +84,8 @@ class SphSolver final : public Solver {
   KernelTable kernel_table_;
   KernelTable gradient_table_;
   CellGrid grid_;
+  NeighbourList neighbours_;  // fluid pairs and fluid-wall pairs of the fluid rates
+  RateBuffers rate_buffers_;
   double max_acceleration_ = 0.0;
   double max_speed_ = 0.0;
   std::size_t steps_ = 0;

@@ -39,7 +39,8 @@ void compute_wall_forces(const Fields& f, std::size_t fluid_count, const CellGri
     Vec3 couple = Vec3::Zero();
     auto gather = [&](std::size_t i, const Vec3& r_wi, double r2) {
       const PairCentre centre = pair_centre(i, f, p);
-      Vec3 acceleration = pair_rates(centre, w, -r_wi, r2, f, kernel, p).acceleration;
+      Vec3 acceleration =
+          wall_pair_rates(centre, w, -r_wi, r2, 1.0 / f.density[w], f, kernel, p).acceleration;
       if (rigid) {
         const double r = std::sqrt(r2);
         acceleration += rigid_wall_traction(centre, w, (kernel.derivative(r) / r) * -r_wi, f);

@@ -11,7 +11,7 @@
 #include <cstdio>
 #include <limits>
 
-#include "particles/cell_grid.hpp"
+#include "particles/neighbour_list.hpp"
 #include "sph/fluid_rates.hpp"
 #include "sph/kernel.hpp"
 
@@ -58,9 +58,10 @@ struct HydrostaticBlock {
   const std::vector<double>& density_rates() {
     const auto kernel = kernel_registry().create("wendland_c2");
     const KernelTable table(*kernel, parameters.h, 2);
-    CellGrid grid(domain, table.support_radius());
-    grid.build(fields.position);
-    compute_fluid_rates(fields, store.size(), grid, table, parameters);
+    NeighbourList list(domain, table.support_radius(), 0.1 * table.support_radius());
+    list.update(fields.position, store.size(), store.size());
+    RateBuffers buffers;
+    compute_fluid_rates(fields, store.size(), list, table, parameters, buffers);
     return fields.density_rate;
   }
 };
