@@ -3,6 +3,7 @@
 #include "geometry/fixed_motion.hpp"
 #include "geometry/planetary_motion.hpp"
 #include "geometry/rotation_motion.hpp"
+#include "geometry/sliding_motion.hpp"
 #include "geometry/translation_motion.hpp"
 
 namespace partimix::geometry {
@@ -20,6 +21,9 @@ const Registry<Motion, const MotionConfig&>& motion_registry() {
     });
     r.add("translation", [](const MotionConfig& c) {
       return std::make_unique<TranslationMotion>(c.velocity, c.start, c.stop);
+    });
+    r.add("sliding", [](const MotionConfig& c) {
+      return std::make_unique<SlidingMotion>(c.velocity, c.ramp_time);
     });
     return r;
   }();

@@ -28,14 +28,14 @@ struct RigidPose {
 
 // The settings of every motion kind, as read from a case file's `motion:` map.
 struct MotionConfig {
-  std::string type = "fixed";      // fixed | rotation | planetary | translation
+  std::string type = "fixed";      // fixed | rotation | planetary | translation | sliding
   Vec3 axis = Vec3::UnitZ();       // unit axis of rotation (and of revolution)
   Vec3 axis_point = Vec3::Zero();  // rotation: a point of the axis; planetary: the body's own axis
   double rpm = 0.0;                // rotation: N; planetary: spin N_R about the own axis
   Vec3 centre = Vec3::Zero();      // planetary: a point of the revolution (vessel) axis
   double revolution_rpm = 0.0;     // planetary: N_G about the revolution axis
   double ramp_time = 0.0;          // smooth start-up over this time [s]; 0: none
-  Vec3 velocity = Vec3::Zero();    // translation: the constant velocity [m/s]
+  Vec3 velocity = Vec3::Zero();    // translation, sliding: the constant velocity [m/s]
   double start = 0.0;              // translation: moves from this time [s]
   double stop = std::numeric_limits<double>::infinity();  // translation: until this time [s]
 };

@@ -32,8 +32,8 @@ void read_translation(Reader& section, geometry::MotionConfig& motion, int dimen
 geometry::MotionConfig read_motion(Reader& item, int dimensions) {
   Reader section = item.optional_map("motion");
   geometry::MotionConfig motion;
-  motion.type =
-      section.choice("type", motion.type, {"fixed", "rotation", "planetary", "translation"});
+  motion.type = section.choice("type", motion.type,
+                               {"fixed", "rotation", "planetary", "translation", "sliding"});
   if (motion.type == "rotation" || motion.type == "planetary") {
     motion.axis = read_axis(section, dimensions);
     motion.axis_point = section.vector("axis_point", dimensions, Vec3::Zero());
@@ -46,6 +46,10 @@ geometry::MotionConfig read_motion(Reader& item, int dimensions) {
   }
   if (motion.type == "translation")
     read_translation(section, motion, dimensions);
+  if (motion.type == "sliding") {
+    motion.velocity = section.vector("velocity", dimensions);
+    motion.ramp_time = section.optional<double>("ramp_time", 0.0, kNonNegative);
+  }
   section.done();
   return motion;
 }
