@@ -84,9 +84,4 @@ void NeighbourList::build(std::span<const Vec3> positions) {
   ++builds_;
 }
 
-std::size_t NeighbourList::bytes() const {
-  return grid_.bytes() + (first_.capacity() + middle_.capacity()) * sizeof(std::size_t) +
-         partners_.capacity() * sizeof(std::uint32_t) + built_at_.capacity() * sizeof(Vec3);
-}
-
 }  // namespace partimix

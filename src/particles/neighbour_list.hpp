@@ -1,9 +1,9 @@
 #pragma once
 // Verlet neighbour list with a skin (DESIGN.md, "Data and speed"; docs/performance.md,
-// "Neighbour lists"): for each particle i < count, the partners j > i that lay within
-// radius + skin at the last build, those below `split` first. The list stays valid until some
-// particle has moved half the skin since the build, so it serves several force evaluations, and
-// each pair is listed once. Built in two passes of a cell grid (count, then fill) into buffers
+// "DualSPHysics' CaseDambreak, side by side"): for each particle i < count, the partners j > i that
+// lay within radius + skin at the last build, those below `split` first. The list stays valid until
+// some particle has moved half the skin since the build, so it serves several force evaluations,
+// and each pair is listed once. Built in two passes of a cell grid (count, then fill) into buffers
 // that are reused.
 #include <cstdint>
 #include <span>
@@ -33,7 +33,6 @@ class NeighbourList {
                         Beyond&& beyond) const;
 
   std::size_t builds() const { return builds_; }
-  std::size_t bytes() const;
 
  private:
   void build(std::span<const Vec3> positions);

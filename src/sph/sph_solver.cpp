@@ -22,7 +22,8 @@ namespace partimix::sph {
 namespace {
 
 // Skin of the neighbour list as a fraction of the kernel support: a larger skin rebuilds less
-// often but evaluates more pairs beyond the support (docs/performance.md, "Neighbour lists").
+// often but lists more partners beyond the support, each costing a distance test
+// (docs/performance.md, "DualSPHysics' CaseDambreak, side by side").
 constexpr double kNeighbourSkin = 0.1;
 
 std::unique_ptr<Kernel> make_kernel(const std::string& name, const std::string& key) {
