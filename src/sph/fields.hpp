@@ -51,9 +51,6 @@ struct Fields {
   // Viscous stress tau = 2 eta_a S of every particle, for the stress-form viscous operator only
   // (empty otherwise). Recomputed at every interaction, so it is not part of the store.
   std::vector<Mat3> viscous_stress;
-  // 1 / rho of every particle, refreshed by compute_fluid_rates before its pair loop so that
-  // the pair terms multiply instead of divide. Not part of the store.
-  std::vector<double> inverse_density;
 };
 
 inline bool is_fluid(std::int32_t kind) {

@@ -11,15 +11,13 @@
 namespace partimix::sph {
 namespace {
 
-void refresh_inverse_density(Fields& f) {
+// Sizes the buffers (a no-op once sized) and sets 1 / rho of every particle.
+void prepare(const Fields& f, RateBuffers& buffers, std::size_t fluid_count) {
   const auto all = static_cast<std::ptrdiff_t>(f.density.size());
-  f.inverse_density.resize(f.density.size());
+  buffers.inverse_density.resize(f.density.size());
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t j = 0; j < all; ++j)
-    f.inverse_density[j] = 1.0 / f.density[j];
-}
-
-void size_buffers(RateBuffers& buffers, std::size_t fluid_count) {
+    buffers.inverse_density[j] = 1.0 / f.density[j];
   const auto threads = static_cast<std::size_t>(omp_get_max_threads());
   buffers.acceleration.resize(threads);
   buffers.density_rate.resize(threads);
@@ -31,15 +29,15 @@ void size_buffers(RateBuffers& buffers, std::size_t fluid_count) {
 
 // Adds the terms of fluid particle i and its partners j > i to this thread's buffers.
 void add_pairs_of(std::size_t i, const Fields& f, const NeighbourList& list,
-                  const KernelTable& kernel, const Parameters& p, Vec3* acceleration,
-                  double* density_rate) {
+                  const KernelTable& kernel, const Parameters& p, const double* inverse_density,
+                  Vec3* acceleration, double* density_rate) {
   const PairCentre centre = pair_centre(i, f, p);
   const double m_i = f.mass[i];
-  const double volume_i = m_i * f.inverse_density[i];
+  const double volume_i = m_i * inverse_density[i];
   Vec3 sum_acceleration = Vec3::Zero();
   double sum_density_rate = 0.0;
   auto fluid = [&](std::size_t j, const Vec3& r_ij, double r2) __attribute__((always_inline)) {
-    const double inverse_density_j = f.inverse_density[j];
+    const double inverse_density_j = inverse_density[j];
     const SharedPairTerms t =
         fluid_pair_terms(centre, j, r_ij, r2, inverse_density_j, f, kernel, p);
     const double m_j = f.mass[j];
@@ -49,8 +47,7 @@ void add_pairs_of(std::size_t i, const Fields& f, const NeighbourList& list,
     density_rate[j] += m_i * t.density_rate - volume_i * t.diffusion;
   };
   auto wall = [&](std::size_t w, const Vec3& r_iw, double r2) __attribute__((always_inline)) {
-    const PairRates rates =
-        wall_pair_rates(centre, w, r_iw, r2, f.inverse_density[w], f, kernel, p);
+    const PairRates rates = wall_pair_rates(centre, w, r_iw, r2, inverse_density[w], f, kernel, p);
     sum_acceleration += rates.acceleration;
     sum_density_rate += rates.density_rate;
   };
@@ -64,8 +61,7 @@ void add_pairs_of(std::size_t i, const Fields& f, const NeighbourList& list,
 RateExtremes compute_fluid_rates(Fields& f, std::size_t fluid_count, const NeighbourList& list,
                                  const KernelTable& kernel, const Parameters& p,
                                  RateBuffers& buffers) {
-  refresh_inverse_density(f);
-  size_buffers(buffers, fluid_count);
+  prepare(f, buffers, fluid_count);
   const auto n = static_cast<std::ptrdiff_t>(fluid_count);
   double max_acceleration2 = 0.0;
   double max_speed2 = 0.0;
@@ -80,7 +76,8 @@ RateExtremes compute_fluid_rates(Fields& f, std::size_t fluid_count, const Neigh
     // A fixed assignment of particles to threads, so that a run is repeatable.
 #pragma omp for schedule(static, 256)
     for (std::ptrdiff_t ii = 0; ii < n; ++ii)
-      add_pairs_of(static_cast<std::size_t>(ii), f, list, kernel, p, acceleration, density_rate);
+      add_pairs_of(static_cast<std::size_t>(ii), f, list, kernel, p, buffers.inverse_density.data(),
+                   acceleration, density_rate);
     const auto threads = static_cast<std::size_t>(omp_get_num_threads());
 #pragma omp for schedule(static)
     for (std::ptrdiff_t ii = 0; ii < n; ++ii) {

@@ -18,10 +18,12 @@ struct RateExtremes {
   double max_speed = 0.0;         // over fluid particles [m/s]
 };
 
-// Each thread's share of the rates of the fluid particles it was given as partners, reduced in
-// thread order (DESIGN.md, "Data and speed": results depend on the thread count by round-off
-// only). Kept between calls so that the rates do not allocate.
+// Scratch of the fluid rates, kept between calls so that they do not allocate: 1 / rho of
+// every particle, so that the pair terms multiply instead of divide, and each thread's share of
+// the rates of the fluid particles it was given as partners, reduced in thread order
+// (DESIGN.md, "Data and speed": results depend on the thread count by round-off only).
 struct RateBuffers {
+  std::vector<double> inverse_density;
   std::vector<std::vector<Vec3>> acceleration;
   std::vector<std::vector<double>> density_rate;
 };

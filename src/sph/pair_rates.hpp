@@ -60,6 +60,34 @@ inline double artificial_viscosity(double approach, double r2, double rho_i, dou
          ((r2 + p.eta2) * 0.5 * (rho_i + rho_j));
 }
 
+// The acceleration of fluid particle i per unit mass of neighbour j (docs/sph.md): pressure,
+// Morris viscosity with the pair viscosity eta_sum and the velocity difference v_viscous (a
+// wall's ghost velocity for a wall), stress form, artificial viscosity. grad = F r_ij.
+[[gnu::always_inline]] inline Vec3 momentum_per_mass(const PairCentre& i, std::size_t j,
+                                                     const Vec3& r_ij, double r2,
+                                                     double gradient_factor,
+                                                     double inverse_density_j, double eta_sum,
+                                                     const Vec3& v_viscous, const Fields& f,
+                                                     const Parameters& p) {
+  const Vec3 grad = gradient_factor * r_ij;
+  const double p_over_rho2_j = f.pressure[j] * inverse_density_j * inverse_density_j;
+  Vec3 acceleration = -(i.p_over_rho2 + p_over_rho2_j) * grad;
+  if (p.viscous_operator != ViscousOperator::none) {
+    // Morris et al. (1997), eq. 8 with twice the pair's mean viscosity, r_ij . grad = F r2.
+    acceleration +=
+        (i.inverse_density * inverse_density_j * eta_sum * gradient_factor * r2 / (r2 + p.eta2)) *
+        v_viscous;
+  }
+  if (p.viscous_operator == ViscousOperator::stress) {
+    acceleration +=
+        (i.tau_over_rho2 + f.viscous_stress[j] * (inverse_density_j * inverse_density_j)) * grad;
+  }
+  if (p.artificial_viscosity > 0.0)
+    acceleration -=
+        artificial_viscosity(v_viscous.dot(r_ij), r2, i.density, f.density[j], p) * grad;
+  return acceleration;
+}
+
 // What fluid particles i and j share: with it, a_i += m_j A, a_j -= m_i A,
 // drho_i += m_j s + V_j d and drho_j += m_i s - V_i d (V = m / rho).
 struct SharedPairTerms {
@@ -74,30 +102,15 @@ struct SharedPairTerms {
     const PairCentre& i, std::size_t j, const Vec3& r_ij, double r2, double inverse_density_j,
     const Fields& f, const KernelTable& kernel, const Parameters& p) {
   const double r = std::sqrt(r2);
-  const double gradient_factor = kernel.derivative(r) / r;  // F
-  const Vec3 grad = gradient_factor * r_ij;                 // grad_i W_ij
-  const double rho_j = f.density[j];
+  const double gradient_factor = kernel.derivative(r) / r;  // F: grad_i W_ij = F r_ij
   const Vec3 v_ij = i.velocity - f.velocity[j];
   SharedPairTerms terms;
-  terms.density_rate = v_ij.dot(grad);
-  const double p_over_rho2_j = f.pressure[j] * inverse_density_j * inverse_density_j;
-  terms.acceleration = -(i.p_over_rho2 + p_over_rho2_j) * grad;
-  if (p.viscous_operator != ViscousOperator::none) {
-    // Morris et al. (1997), eq. 8 with twice the pair's mean viscosity (arithmetic or
-    // harmonic), r_ij . grad = F r2.
-    const double eta_sum = pair_viscosity(i.viscosity, f.viscosity[j], p);
-    terms.acceleration +=
-        (i.inverse_density * inverse_density_j * eta_sum * gradient_factor * r2 / (r2 + p.eta2)) *
-        v_ij;
-  }
-  if (p.viscous_operator == ViscousOperator::stress) {
-    terms.acceleration +=
-        (i.tau_over_rho2 + f.viscous_stress[j] * (inverse_density_j * inverse_density_j)) * grad;
-  }
-  if (p.artificial_viscosity > 0.0)
-    terms.acceleration -= artificial_viscosity(v_ij.dot(r_ij), r2, i.density, rho_j, p) * grad;
+  terms.density_rate = gradient_factor * v_ij.dot(r_ij);
+  terms.acceleration =
+      momentum_per_mass(i, j, r_ij, r2, gradient_factor, inverse_density_j,
+                        pair_viscosity(i.viscosity, f.viscosity[j], p), v_ij, f, p);
   if (p.diffusion != DensityDiffusion::none) {
-    double difference = rho_j - i.density;
+    double difference = f.density[j] - i.density;
     if (p.diffusion == DensityDiffusion::fourtakas) {
       difference +=
           p.reference_density * p.hydrostatic_gravity.dot(r_ij) / (p.sound_speed * p.sound_speed);
@@ -117,29 +130,12 @@ struct SharedPairTerms {
                                                         const Parameters& p) {
   const double r = std::sqrt(r2);
   const double gradient_factor = kernel.derivative(r) / r;
-  const Vec3 grad = gradient_factor * r_iw;
   const double m_w = f.mass[w];
-  const Vec3 v_iw = i.velocity - f.velocity[w];
-  const Vec3 v_iw_viscous = i.velocity - f.wall_velocity[w];
   PairRates rates;
-  rates.density_rate = m_w * v_iw.dot(grad);
-  const double p_over_rho2_w = f.pressure[w] * inverse_density_w * inverse_density_w;
-  Vec3 acceleration = -(i.p_over_rho2 + p_over_rho2_w) * grad;
-  if (p.viscous_operator != ViscousOperator::none) {
-    const double eta_sum = pair_viscosity(i.viscosity, i.viscosity, p);
-    acceleration +=
-        (i.inverse_density * inverse_density_w * eta_sum * gradient_factor * r2 / (r2 + p.eta2)) *
-        v_iw_viscous;
-  }
-  if (p.viscous_operator == ViscousOperator::stress) {
-    acceleration +=
-        (i.tau_over_rho2 + f.viscous_stress[w] * (inverse_density_w * inverse_density_w)) * grad;
-  }
-  if (p.artificial_viscosity > 0.0) {
-    acceleration -=
-        artificial_viscosity(v_iw_viscous.dot(r_iw), r2, i.density, f.density[w], p) * grad;
-  }
-  rates.acceleration = m_w * acceleration;
+  rates.density_rate = m_w * gradient_factor * (i.velocity - f.velocity[w]).dot(r_iw);
+  rates.acceleration = m_w * momentum_per_mass(i, w, r_iw, r2, gradient_factor, inverse_density_w,
+                                               pair_viscosity(i.viscosity, i.viscosity, p),
+                                               i.velocity - f.wall_velocity[w], f, p);
   return rates;
 }
 

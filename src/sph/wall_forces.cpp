@@ -37,10 +37,11 @@ void compute_wall_forces(const Fields& f, std::size_t fluid_count, const CellGri
     const auto w = static_cast<std::size_t>(ww);
     Vec3 force = Vec3::Zero();
     Vec3 couple = Vec3::Zero();
+    const double inverse_density_w = 1.0 / f.density[w];
     auto gather = [&](std::size_t i, const Vec3& r_wi, double r2) {
       const PairCentre centre = pair_centre(i, f, p);
       Vec3 acceleration =
-          wall_pair_rates(centre, w, -r_wi, r2, 1.0 / f.density[w], f, kernel, p).acceleration;
+          wall_pair_rates(centre, w, -r_wi, r2, inverse_density_w, f, kernel, p).acceleration;
       if (rigid) {
         const double r = std::sqrt(r2);
         acceleration += rigid_wall_traction(centre, w, (kernel.derivative(r) / r) * -r_wi, f);
