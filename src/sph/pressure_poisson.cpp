@@ -97,9 +97,8 @@ void PressurePoisson::add_wall_row(std::size_t w, const Fields& f, std::size_t f
   entries.emplace_back(row, row, 1.0);
   Vec3 relative_gravity = p.gravity;
   if (f.body_acceleration != nullptr)
-    rhs_[row] = p.reference_density * relative_gravity.dot(moment) / weight;
-  rhs_[row] =
-      std::getenv("HT_NOG") ? 0.0 : p.reference_density * relative_gravity.dot(moment) / weight;
+    relative_gravity -= (*f.body_acceleration)[w];
+  rhs_[row] = p.reference_density * relative_gravity.dot(moment) / weight;
 }
 
 // Rows in parallel, each thread into its own list, then gathered in one.
@@ -128,31 +127,41 @@ void PressurePoisson::assemble(const Fields& f, std::size_t fluid_count, const C
     entries_.insert(entries_.end(), local.begin(), local.end());
 }
 
+// Without a free surface the pressure is fixed only up to a constant and the discrete source is
+// not exactly compatible with the walls' rows: each fluid row's diagonal grows by the fraction
+// kRegularisation, a uniform slight compressibility that takes up the incompatibility evenly
+// (a constant pressure, taken off after the solve) instead of at one pinned particle (docs/sph.md,
+// "Incompressible SPH").
+void PressurePoisson::regularise_fluid_rows(std::size_t fluid_count) {
+  for (Eigen::Triplet<double>& e : entries_) {
+    if (e.row() == e.col() && static_cast<std::size_t>(e.row()) < fluid_count)
+      e = Eigen::Triplet<double>(e.row(), e.col(), e.value() * (1.0 + kRegularisation));
+  }
+}
+
 LinearSolve PressurePoisson::solve(Fields& f, std::size_t fluid_count, const CellGrid& grid,
                                    const KernelTable& kernel, const KernelTable& gradient_kernel,
                                    const Parameters& p, double dt) {
   const std::size_t n = f.position.size();
   rhs_.resize(static_cast<Eigen::Index>(n));
   assemble(f, fluid_count, grid, kernel, gradient_kernel, p, dt);
-  if (!has_dirichlet_row_ && fluid_count > 0) {
-    // The pressure is fixed up to a constant: pin the first fluid particle's.
-    std::erase_if(entries_, [](const Eigen::Triplet<double>& e) { return e.row() == 0; });
-    entries_.emplace_back(0, 0, 1.0);
-    rhs_[0] = 0.0;
-  }
+  if (!has_dirichlet_row_)
+    regularise_fluid_rows(fluid_count);
   matrix_.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
   matrix_.setFromTriplets(entries_.begin(), entries_.end());
   solver_.compute(matrix_);
   if (solution_.size() != rhs_.size())
     solution_.setZero(rhs_.size());
+  const double guess_offset = has_dirichlet_row_ ? 0.0 : mean_offset_;
   for (std::size_t i = 0; i < n; ++i)
-    solution_[static_cast<Eigen::Index>(i)] = f.pressure[i];
+    solution_[static_cast<Eigen::Index>(i)] = f.pressure[i] + guess_offset;
   solution_ = solver_.solveWithGuess(rhs_, solution_);
   double mean = 0.0;
   if (!has_dirichlet_row_) {
     for (std::size_t i = 0; i < fluid_count; ++i)
       mean += solution_[static_cast<Eigen::Index>(i)];
     mean /= static_cast<double>(fluid_count);
+    mean_offset_ = mean;
   }
   for (std::size_t i = 0; i < n; ++i) {
     f.pressure[i] = solution_[static_cast<Eigen::Index>(i)] - mean;

@@ -35,10 +35,15 @@ class PressurePoisson {
                      const KernelTable& kernel, const Parameters& p, double dt, Entries& entries);
   void add_wall_row(std::size_t w, const Fields& f, std::size_t fluid_count, const CellGrid& grid,
                     const KernelTable& kernel, const Parameters& p, Entries& entries);
+  void regularise_fluid_rows(std::size_t fluid_count);
   void assemble(const Fields& f, std::size_t fluid_count, const CellGrid& grid,
                 const KernelTable& kernel, const KernelTable& gradient_kernel, const Parameters& p,
                 double dt);
 
+  // Relative growth of a fluid row's diagonal without a free surface (docs/sph.md): small
+  // against the lowest mode of the discrete Laplacian, (pi dp / L)^2 of the diagonal, up to
+  // L ~ 1000 spacings.
+  static constexpr double kRegularisation = 1e-6;
   using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
   std::vector<Entries> thread_entries_;  // the rows each thread assembled
   Entries entries_;
@@ -47,6 +52,7 @@ class PressurePoisson {
   Matrix matrix_;
   Eigen::BiCGSTAB<Matrix, Eigen::DiagonalPreconditioner<double>> solver_;
   bool has_dirichlet_row_ = false;
+  double mean_offset_ = 0.0;  // the constant taken off the last solution: the next one's guess
 };
 
 // u_i -= dt sum_j m_j (p_i + p_j) / rho0^2 grad_i W_ij for the fluid particles (pressures of

@@ -33,6 +33,7 @@
 
 #include "analysis/body_load.hpp"
 #include "couette_profile.hpp"
+#include "ring_lattice.hpp"
 #include "sph/sph_solver.hpp"
 
 namespace partimix {
@@ -61,25 +62,6 @@ struct Fluid {
                     index);
   }
 };
-
-// `count` rings of particles `spacing` apart, the first at radius `first`, going outward
-// (step +1) or inward (step -1); each ring holds round(2 pi r / dp) particles.
-void add_rings(ParticleStore& store, double spacing, double first, int count, int step,
-               ParticleKind kind) {
-  for (int k = 0; k < count; ++k) {
-    const double r = first + step * k * spacing;
-    const int n = static_cast<int>(std::lround(2.0 * std::numbers::pi * r / spacing));
-    const double offset = 0.5 * (k % 2);
-    for (int a = 0; a < n; ++a) {
-      const double angle = 2.0 * std::numbers::pi * (a + offset) / n;
-      const std::size_t i = store.size();
-      store.resize(i + 1);
-      store.position()[i] = Vec3(r * std::cos(angle), r * std::sin(angle), 0.0);
-      store.kind()[i] = static_cast<std::int32_t>(kind);
-      store.id()[i] = static_cast<std::int64_t>(i);
-    }
-  }
-}
 
 struct Measured {
   double l2 = 0.0;                  // of v_theta, relative to Omega R1
