@@ -17,6 +17,12 @@ inline const std::vector<Vec3>* body_acceleration_of(const ParticleStore& store)
   return field != nullptr ? &field->values : nullptr;
 }
 
+inline const std::vector<std::int32_t>* integers_of(const ParticleStore& store,
+                                                    const std::string& name) {
+  const Field<std::int32_t>* field = store.find_integer(name);
+  return field != nullptr ? &field->values : nullptr;
+}
+
 struct Fields {
   explicit Fields(ParticleStore& store)
       : kind(store.kind()),
@@ -31,7 +37,9 @@ struct Fields {
         viscosity(store.add_scalar("viscosity", "Pa s").values),
         shear_rate(store.add_scalar("shear_rate", "1/s").values),
         angular_velocity(angular_velocity_of(store)),
-        body_acceleration(body_acceleration_of(store)) {}
+        body_acceleration(body_acceleration_of(store)),
+        body(integers_of(store, "body")),
+        solid(integers_of(store, "solid")) {}
 
   std::vector<std::int32_t>& kind;
   std::vector<Vec3>& position;
@@ -48,6 +56,10 @@ struct Fields {
   // null when the store has no bodies.
   const std::vector<Vec3>* angular_velocity;
   const std::vector<Vec3>* body_acceleration;  // of moving wall particles; null without bodies
+  const std::vector<std::int32_t>* body;       // each wall particle's body; null without bodies
+  // 1 for the particles of a solid body (sph/particle_generation.cpp); null when the particles
+  // were not generated from a case's walls.
+  const std::vector<std::int32_t>* solid;
   // Viscous stress tau = 2 eta_a S of every particle, for the stress-form viscous operator only
   // (empty otherwise). Recomputed at every interaction, so it is not part of the store.
   std::vector<Mat3> viscous_stress;

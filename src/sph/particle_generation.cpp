@@ -25,6 +25,13 @@ void append(ParticleStore& store, const std::vector<Vec3>& points, ParticleKind 
   }
 }
 
+// Field "solid" (not written): 1 for the particles of a solid body from `first` on, 0 for the
+// rest; the wall loads take a solid body's uniform pressure from its own particles
+// (sph/wall_forces.hpp).
+void mark_solid(std::vector<std::int32_t>& flag, std::size_t first, bool solid) {
+  std::fill(flag.begin() + static_cast<std::ptrdiff_t>(first), flag.end(), solid ? 1 : 0);
+}
+
 void check_inside_domain(const io::Case& the_case, const ParticleStore& store) {
   for (std::size_t i = 0; i < store.size(); ++i) {
     if (!the_case.domain.contains(store.position()[i])) {
@@ -96,8 +103,11 @@ std::vector<Vec3> wall_points(const io::Case& the_case, const Config& config, st
                                    lattice);
     });
   }
+  // Twice the layers of a container: the particles within the fluid's reach then see the body
+  // around them in full, which the loads' area vectors need (docs/power.md, "Uniform parts of
+  // the load").
   std::vector<Vec3> points = located(the_case, key, [&] {
-    return geometry::inside_layers(*wall.shape, spacing, layers, the_case.domain, lattice);
+    return geometry::inside_layers(*wall.shape, spacing, 2 * layers, the_case.domain, lattice);
   });
   if (points.empty()) {
     throw io::case_error(the_case, key,
@@ -174,6 +184,7 @@ void generate_particles(const io::Case& the_case, const SphSection& section,
         ParticleKind::fluid);
   }
   instance.bodies = std::make_unique<geometry::MovingBodies>(store, the_case.domain);
+  std::vector<std::int32_t>& solid = store.add_integer("solid", "", false).values;
   for (std::size_t w = 0; w < the_case.walls.size(); ++w) {
     const io::WallSpec& wall = the_case.walls[w];
     const std::size_t first = store.size();
@@ -186,6 +197,7 @@ void generate_particles(const io::Case& the_case, const SphSection& section,
       instance.load_caveats[static_cast<int>(w)] = std::move(*reason);
     }
     append(store, points, ParticleKind::wall);
+    mark_solid(solid, first, wall.solid);
     auto motion = geometry::motion_registry().create(wall.motion.type, wall.motion);
     if (!motion) {
       throw io::case_error(the_case, fmt::format("walls[{}].motion.type", w),

@@ -21,8 +21,30 @@ Vec3 rigid_wall_traction(const PairCentre& i, std::size_t w, const Vec3& grad, c
   return -factor * (*f.angular_velocity)[w].cross(grad);
 }
 
+// s_w = V_w sum_(w' of w's body) V_w' grad_w W_ww' (V = m / rho0): the part of the body's
+// surface that wall particle w stands for, as an area vector pointing into the body, half the
+// area in the continuum limit (docs/power.md, "Uniform parts of the load"). Over a body it sums
+// to zero, and so do its moments about any point: each pair appears twice with opposite signs.
+Vec3 body_area_vector(std::size_t w, const Fields& f, std::size_t fluid_count, const CellGrid& grid,
+                      const KernelTable& kernel, const Parameters& p) {
+  const std::int32_t own = (*f.body)[w];
+  Vec3 sum = Vec3::Zero();
+  grid.for_each_neighbour(
+      w, f.position,
+      [&](std::size_t j, const Vec3& r_wj, double r2) {
+        if (j == w || (*f.body)[j] != own)
+          return;
+        const double r = std::sqrt(r2);
+        sum += (f.mass[j] * kernel.derivative(r) / r) * r_wj;
+      },
+      f.position.size(), fluid_count);
+  return (f.mass[w] / (p.reference_density * p.reference_density)) * sum;
+}
+
 }  // namespace
 
+// docs/power.md, "Uniform parts of the load": on a solid body, the pair terms with the wall's
+// own pressure taken off the fluid's, plus 2 p_w s_w; elsewhere the pair terms alone.
 void compute_wall_forces(const Fields& f, std::size_t fluid_count, const CellGrid& grid,
                          const KernelTable& kernel, const Parameters& p, WallTraction traction,
                          WallLoads loads) {
@@ -35,22 +57,32 @@ void compute_wall_forces(const Fields& f, std::size_t fluid_count, const CellGri
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t ww = first; ww < n; ++ww) {
     const auto w = static_cast<std::size_t>(ww);
+    const bool solid = f.solid != nullptr && f.body != nullptr && (*f.solid)[w] != 0;
     Vec3 force = Vec3::Zero();
     Vec3 couple = Vec3::Zero();
+    bool wetted = false;
     const double inverse_density_w = 1.0 / f.density[w];
+    const double p_w = f.pressure[w];
+    const double reference = solid ? p_w : 0.0;  // the pressure taken off the pair terms
+    const double wall_p_over_rho2 = reference * inverse_density_w * inverse_density_w;
     auto gather = [&](std::size_t i, const Vec3& r_wi, double r2) {
-      const PairCentre centre = pair_centre(i, f, p);
+      PairCentre centre = pair_centre(i, f, p);
+      centre.p_over_rho2 -= reference * centre.inverse_density * centre.inverse_density;
+      const double r = std::sqrt(r2);
+      const Vec3 grad = (kernel.derivative(r) / r) * -r_wi;
       Vec3 acceleration =
-          wall_pair_rates(centre, w, -r_wi, r2, inverse_density_w, f, kernel, p).acceleration;
-      if (rigid) {
-        const double r = std::sqrt(r2);
-        acceleration += rigid_wall_traction(centre, w, (kernel.derivative(r) / r) * -r_wi, f);
-      }
+          wall_pair_rates(centre, w, -r_wi, r2, inverse_density_w, f, kernel, p).acceleration +
+          f.mass[w] * wall_p_over_rho2 * grad;
+      if (rigid)
+        acceleration += rigid_wall_traction(centre, w, grad, f);
       const Vec3 f_iw = -f.mass[i] * acceleration;
       force += f_iw;
       couple += (-0.5 * r_wi).cross(f_iw);
+      wetted = true;
     };
     grid.for_each_neighbour(w, f.position, gather, fluid_count);
+    if (solid && wetted)
+      force += 2.0 * reference * body_area_vector(w, f, fluid_count, grid, kernel, p);
     loads.force[w] = force;
     loads.couple[w] = couple;
   }

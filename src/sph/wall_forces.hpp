@@ -1,9 +1,13 @@
 #pragma once
 // The force of the fluid on every wall particle (docs/power.md; the seed's eq. 23): the
 // reaction to the pair terms that wall particle j exerts on its fluid neighbours,
-// f_j = -sum_i m_i a_(i<-j), so that the loads on a body balance the momentum its particles
-// give the fluid. Each pair force acts at the midpoint of the pair, where the wall surface lies
-// between the first fluid and wall layers; a wall particle's couple
+// f_j = -sum_i m_i a_(i<-j), except for the parts that a uniform field would give (a uniform
+// pressure; with the Morris operator, the rigid-wall traction eta n x omega): those the pair
+// sums integrate over the fluid particles around j, which are not arranged as on a lattice, so
+// they are taken from the body's own particles instead, which are (docs/power.md, "Uniform parts
+// of the load"). A uniform pressure then exerts no force and no torque on a body, whatever the
+// fluid's arrangement. Each pair force acts at the midpoint of the pair, where the wall surface
+// lies between the first fluid and wall layers; a wall particle's couple
 // c_j = sum_i (x_i - x_j) / 2 x f_ij makes its moment about any point o (x_j - o) x f_j + c_j.
 #include <vector>
 
