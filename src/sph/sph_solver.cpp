@@ -379,7 +379,8 @@ void SphSolver::predict_viscous_explicit(double dt) {
 }
 
 // Backward Euler (docs/sph.md, "Implicit viscosity"), with Picard iteration on the apparent
-// viscosity of a non-Newtonian fluid until no particle's changes by more than 1%.
+// viscosity of a non-Newtonian fluid until no particle's changes by more than 1%; the first time
+// that takes more than sph.viscosity_iterations solves, the run says so and goes on.
 void SphSolver::predict_viscous_implicit(double dt) {
   for (int iteration = 0; iteration < config_.viscosity_iterations; ++iteration) {
     stop_unless_converged(viscous_->solve(fields_, fluid_count_, grid_, gradient_table_,
@@ -387,6 +388,14 @@ void SphSolver::predict_viscous_implicit(double dt) {
                           "the implicit viscosity solve");
     if (newtonian_ || !update_apparent_viscosity())
       return;
+  }
+  if (config_.viscosity_iterations > 1 && !warned_about_picard_) {
+    warned_about_picard_ = true;
+    spdlog::warn(
+        "at t = {:.6g} s the apparent viscosity still changed by more than 1% after "
+        "sph.viscosity_iterations = {} solves; the step goes on with the last one (this is said "
+        "once)",
+        time_, config_.viscosity_iterations);
   }
 }
 

@@ -92,6 +92,7 @@ class SphSolver final : public Solver {
   double time_ = 0.0;
   geometry::MovingBodies* bodies_;
   bool warned_about_speed_ = false;
+  bool warned_about_picard_ = false;
   double initial_dt_ = 0.0;  // the stable step at t = 0, for run.json (derived_parameters)
   materials::BoundedRheology rheology_;
   bool newtonian_ = true;
