@@ -7,6 +7,12 @@
 
 namespace partimix::app {
 
+double step_towards_end(double step, double remaining) {
+  if (remaining <= step)
+    return remaining;
+  return remaining < 2.0 * step ? 0.5 * remaining : step;
+}
+
 RunClock::RunClock(const io::Case& the_case, Simulation& simulation)
     : case_(the_case), simulation_(simulation) {}
 
@@ -25,7 +31,9 @@ std::optional<double> RunClock::next_step(double remaining, std::string& why) co
     }
     adaptive = std::min(adaptive, stable);
   }
-  return std::min(case_.time.fixed_dt.value_or(adaptive), remaining);
+  if (case_.time.fixed_dt)
+    return std::min(*case_.time.fixed_dt, remaining);
+  return step_towards_end(adaptive, remaining);
 }
 
 void RunClock::advance(double time, double dt) {

@@ -14,6 +14,13 @@
 
 namespace partimix::app {
 
+// The step towards the end of the run: `step` while more than two of them remain, the rest in
+// one step when it is shorter than `step`, and in between half of what remains, so that the last
+// step is never shorter than half the one before. The incompressible scheme's pressure, and so
+// the loads on its bodies, jump when a step is much shorter than the one before
+// (docs/sph.md, "Incompressible SPH").
+double step_towards_end(double step, double remaining);
+
 class RunClock {
  public:
   RunClock(const io::Case& the_case, Simulation& simulation);

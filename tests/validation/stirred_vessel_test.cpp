@@ -15,8 +15,9 @@
 // Re = 0.5, 1, 5, 10; fitted slope -0.968; spread -4.6% / +4.8% about the mean 219.3. Np Re
 // still rises with Re, by 9.9%, where the experiment is flat (slope -0.997); 13.5% before the
 // plate's uniform pressure was taken from its own particles (docs/power.md, "Uniform parts of
-// the load"). With the plate held at 30 mm the constant is not converged (210.9 at dp = 10 mm,
-// 237.3 at 7.5 mm at Re = 0.5, before that change; docs/power.md).
+// the load"). At finer spacings the weakly-compressible rise grows (17.9% at dp = 10 mm, 23% at
+// 7.5 mm) and the incompressible scheme's shrinks (7.1%, 1.6%); neither constant is converged
+// (docs/power.md, "Validation").
 #include <gtest/gtest.h>
 
 #include <cmath>
