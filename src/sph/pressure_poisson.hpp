@@ -40,9 +40,9 @@ class PressurePoisson {
                 const KernelTable& kernel, const KernelTable& gradient_kernel, const Parameters& p,
                 double dt);
 
-  // Relative growth of a fluid row's diagonal without a free surface (docs/sph.md): small
-  // against the lowest mode of the discrete Laplacian, (pi dp / L)^2 of the diagonal, up to
-  // L ~ 1000 spacings.
+  // Relative growth of a fluid row's diagonal without a free surface (docs/sph.md): below 1% of
+  // the lowest mode of the discrete Laplacian, (pi dp / L)^2 of the diagonal, up to L = 300
+  // spacings across.
   static constexpr double kRegularisation = 1e-6;
   using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
   std::vector<Entries> thread_entries_;  // the rows each thread assembled
