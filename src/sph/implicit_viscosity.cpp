@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <omp.h>
+
 #include "sph/pair_rates.hpp"
 
 namespace partimix::sph {
@@ -12,44 +14,114 @@ ImplicitViscosity::ImplicitViscosity(double tolerance, int max_iterations) {
   solver_.setMaxIterations(max_iterations);
 }
 
-// Row i: (1 + dt sum_j c_ij) u*_i - dt sum_(j fluid) c_ij u*_j
-//        = u^n_i + dt g + dt sum_(w wall) c_iw u~_w.
-void ImplicitViscosity::add_row(std::size_t i, const Fields& f, std::size_t fluid_count,
-                                const CellGrid& grid, const KernelTable& kernel,
-                                const Parameters& p, const Vec3& start, double dt) {
+// Row i's partners: fluid ones and the diagonal sorted by index, then the walls (whose indices
+// follow the fluid's).
+void ImplicitViscosity::gather_row(std::size_t i, const Fields& f, const CellGrid& grid,
+                                   const KernelTable& kernel, const Parameters& p,
+                                   std::vector<Partner>& out) {
   const double rho2 = p.reference_density * p.reference_density;
-  const double eta_i = f.viscosity[i];
-  double diagonal = 1.0;
-  Vec3 rhs = start + dt * p.gravity;
+  const std::size_t first = out.size();
+  out.push_back({static_cast<std::uint32_t>(i), 0.0});
   grid.for_each_neighbour(i, f.position, [&](std::size_t j, const Vec3&, double r2) {
     if (j == i)
       return;
     const double r = std::sqrt(r2);
-    const double r_dot_grad = r * kernel.derivative(r);
-    const bool fluid_j = j < fluid_count;
-    const double eta_j = fluid_j ? f.viscosity[j] : eta_i;
-    const double eta_sum = pair_viscosity(eta_i, eta_j, p);
-    const double c_ij = f.mass[j] * eta_sum * -r_dot_grad / (rho2 * (r2 + p.eta2));
-    diagonal += dt * c_ij;
-    if (fluid_j)
-      entries_.emplace_back(static_cast<int>(i), static_cast<int>(j), -dt * c_ij);
-    else
-      rhs += (dt * c_ij) * f.wall_velocity[j];
+    const double factor = f.mass[j] * -(r * kernel.derivative(r)) / (rho2 * (r2 + p.eta2));
+    out.push_back({static_cast<std::uint32_t>(j), factor});
   });
-  entries_.emplace_back(static_cast<int>(i), static_cast<int>(i), diagonal);
+  std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(),
+            [](const Partner& a, const Partner& b) { return a.index < b.index; });
+}
+
+void ImplicitViscosity::gather_pairs(const Fields& f, std::size_t fluid_count, const CellGrid& grid,
+                                     const KernelTable& kernel, const Parameters& p) {
+  const auto threads = static_cast<std::size_t>(omp_get_max_threads());
+  thread_partners_.resize(threads);
+  for (std::vector<Partner>& local : thread_partners_)
+    local.clear();
+  row_start_.assign(fluid_count + 1, 0);
+  wall_start_.assign(fluid_count, 0);
+#pragma omp parallel
+  {
+    const auto thread = static_cast<std::size_t>(omp_get_thread_num());
+    std::vector<Partner>& local = thread_partners_[thread];
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t ii = 0; ii < static_cast<std::ptrdiff_t>(fluid_count); ++ii) {
+      const auto i = static_cast<std::size_t>(ii);
+      const std::size_t before = local.size();
+      gather_row(i, f, grid, kernel, p, local);
+      row_start_[i + 1] = local.size() - before;
+      const auto walls =
+          std::find_if(local.begin() + static_cast<std::ptrdiff_t>(before), local.end(),
+                       [fluid_count](const Partner& q) { return q.index >= fluid_count; });
+      wall_start_[i] = static_cast<std::size_t>(walls - local.begin()) - before;
+    }
+  }
+  for (std::size_t i = 0; i < fluid_count; ++i) {
+    row_start_[i + 1] += row_start_[i];
+    wall_start_[i] += row_start_[i];
+  }
+  partners_.clear();
+  for (const std::vector<Partner>& local : thread_partners_)
+    partners_.insert(partners_.end(), local.begin(), local.end());
+  lay_out_matrix(fluid_count);
+}
+
+// The matrix's rows and columns from the partners; the values come with each solve.
+void ImplicitViscosity::lay_out_matrix(std::size_t fluid_count) {
+  const auto n = static_cast<Eigen::Index>(fluid_count);
+  matrix_.resize(n, n);
+  std::size_t nonzeros = 0;
+  for (std::size_t i = 0; i < fluid_count; ++i)
+    nonzeros += wall_start_[i] - row_start_[i];
+  matrix_.resizeNonZeros(static_cast<Eigen::Index>(nonzeros));
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < fluid_count; ++i) {
+    matrix_.outerIndexPtr()[i] = static_cast<int>(k);
+    for (std::size_t q = row_start_[i]; q < wall_start_[i]; ++q)
+      matrix_.innerIndexPtr()[k++] = static_cast<int>(partners_[q].index);
+  }
+  matrix_.outerIndexPtr()[fluid_count] = static_cast<int>(k);
+}
+
+// Row i: (1 + dt sum_j c_ij) u*_i - dt sum_(j fluid) c_ij u*_j
+//        = u^n_i + dt g + dt sum_(w wall) c_iw u~_w,
+// c_ij = factor_ij times the pair viscosity (eta_i + eta_j or its harmonic form; eta_w = eta_i).
+void ImplicitViscosity::fill_row(std::size_t i, const Fields& f, const Parameters& p,
+                                 const Vec3& start, double dt) {
+  const double eta_i = f.viscosity[i];
+  double diagonal = 1.0;
+  Vec3 rhs = start + dt * p.gravity;
+  double* values = matrix_.valuePtr() + matrix_.outerIndexPtr()[i];
+  double* diagonal_value = values;
+  for (std::size_t q = row_start_[i]; q < wall_start_[i]; ++q, ++values) {
+    const Partner& j = partners_[q];
+    if (j.index == i) {
+      diagonal_value = values;
+      continue;
+    }
+    const double c_ij = j.factor * pair_viscosity(eta_i, f.viscosity[j.index], p);
+    diagonal += dt * c_ij;
+    *values = -dt * c_ij;
+  }
+  const double eta_wall = pair_viscosity(eta_i, eta_i, p);
+  for (std::size_t q = wall_start_[i]; q < row_start_[i + 1]; ++q) {
+    const Partner& w = partners_[q];
+    const double c_iw = w.factor * eta_wall;
+    diagonal += dt * c_iw;
+    rhs += (dt * c_iw) * f.wall_velocity[w.index];
+  }
+  *diagonal_value = diagonal;
   rhs_.row(static_cast<Eigen::Index>(i)) = rhs.transpose();
 }
 
-LinearSolve ImplicitViscosity::solve(Fields& f, std::size_t fluid_count, const CellGrid& grid,
-                                     const KernelTable& gradient_kernel, const Parameters& p,
+LinearSolve ImplicitViscosity::solve(Fields& f, std::size_t fluid_count, const Parameters& p,
                                      const std::vector<Vec3>& start, double dt) {
   const auto n = static_cast<Eigen::Index>(fluid_count);
-  entries_.clear();
   rhs_.resize(n, 3);
-  for (std::size_t i = 0; i < fluid_count; ++i)
-    add_row(i, f, fluid_count, grid, gradient_kernel, p, start[i], dt);
-  matrix_.resize(n, n);
-  matrix_.setFromTriplets(entries_.begin(), entries_.end());
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t i = 0; i < static_cast<std::ptrdiff_t>(fluid_count); ++i)
+    fill_row(static_cast<std::size_t>(i), f, p, start[static_cast<std::size_t>(i)], dt);
   solver_.compute(matrix_);
   LinearSolve result;
   component_.resize(n);

@@ -8,6 +8,7 @@
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCore>
 
+#include "core/aggregation_multigrid.hpp"
 #include "particles/cell_grid.hpp"
 #include "sph/fields.hpp"
 #include "sph/kernel_table.hpp"
@@ -50,7 +51,7 @@ class PressurePoisson {
   Eigen::VectorXd rhs_;
   Eigen::VectorXd solution_;
   Matrix matrix_;
-  Eigen::BiCGSTAB<Matrix, Eigen::DiagonalPreconditioner<double>> solver_;
+  Eigen::BiCGSTAB<Matrix, AggregationMultigrid> solver_;
   bool has_dirichlet_row_ = false;
   double mean_offset_ = 0.0;  // the constant taken off the last solution: the next one's guess
 };

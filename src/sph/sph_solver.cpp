@@ -380,13 +380,14 @@ void SphSolver::predict_viscous_explicit(double dt) {
 
 // Backward Euler (docs/sph.md, "Implicit viscosity"), with Picard iteration on the apparent
 // viscosity of a non-Newtonian fluid until no particle's changes by more than 1%; the first time
-// that takes more than sph.viscosity_iterations solves, the run says so and goes on.
+// that takes more than sph.viscosity_iterations solves, the run says so and goes on. With one
+// solve allowed the viscosities are those of the end of the last step (refresh_incompressible).
 void SphSolver::predict_viscous_implicit(double dt) {
+  viscous_->gather_pairs(fields_, fluid_count_, grid_, gradient_table_, parameters_);
   for (int iteration = 0; iteration < config_.viscosity_iterations; ++iteration) {
-    stop_unless_converged(viscous_->solve(fields_, fluid_count_, grid_, gradient_table_,
-                                          parameters_, start_velocity_, dt),
+    stop_unless_converged(viscous_->solve(fields_, fluid_count_, parameters_, start_velocity_, dt),
                           "the implicit viscosity solve");
-    if (newtonian_ || !update_apparent_viscosity())
+    if (newtonian_ || config_.viscosity_iterations == 1 || !update_apparent_viscosity())
       return;
   }
   if (config_.viscosity_iterations > 1 && !warned_about_picard_) {

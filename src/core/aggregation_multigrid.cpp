@@ -1,0 +1,176 @@
+#include "core/aggregation_multigrid.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace partimix {
+
+namespace {
+
+using Matrix = AggregationMultigrid::Matrix;
+using Vector = AggregationMultigrid::Vector;
+using Index = Eigen::Index;
+
+// docs/sph.md, "The pressure solve": the strength threshold, the size at which the levels stop
+// (and the largest one solved directly),
+// the weight of the one Jacobi sweep before and after the coarse step, and the coarse step's
+// over-correction.
+constexpr double kStrength = 0.5;
+constexpr Index kCoarsestSize = 500;
+constexpr std::size_t kMaxLevels = 12;
+constexpr Index kLargestDirectSize = 20000;
+constexpr int kStalledSweeps = 10;
+constexpr double kJacobiWeight = 0.9;
+constexpr double kOverCorrection = 1.8;
+
+// j is strongly coupled to i when -a_ij is at least kStrength of the row's largest -a_ik.
+template <class Fn>
+void for_each_strong(const Matrix& a, Index i, Fn&& fn) {
+  double largest = 0.0;
+  for (Matrix::InnerIterator it(a, i); it; ++it) {
+    if (it.col() != i)
+      largest = std::max(largest, -it.value());
+  }
+  if (largest <= 0.0)
+    return;
+  for (Matrix::InnerIterator it(a, i); it; ++it) {
+    if (it.col() != i && -it.value() >= kStrength * largest)
+      fn(it.col());
+  }
+}
+
+// The three passes of Vanek et al. (1996): whole neighbourhoods that are still free become
+// aggregates; the rest join an aggregate one of their strong neighbours is in; what is left
+// groups with its free strong neighbours. Returns the number of aggregates.
+int aggregate(const Matrix& a, std::vector<int>& of) {
+  const Index n = a.rows();
+  of.assign(static_cast<std::size_t>(n), -1);
+  int count = 0;
+  for (Index i = 0; i < n; ++i) {
+    bool free = of[static_cast<std::size_t>(i)] < 0;
+    for_each_strong(a, i, [&](Index j) { free = free && of[static_cast<std::size_t>(j)] < 0; });
+    if (!free)
+      continue;
+    of[static_cast<std::size_t>(i)] = count;
+    for_each_strong(a, i, [&](Index j) { of[static_cast<std::size_t>(j)] = count; });
+    ++count;
+  }
+  std::vector<int> joined = of;
+  for (Index i = 0; i < n; ++i) {
+    if (of[static_cast<std::size_t>(i)] >= 0)
+      continue;
+    for_each_strong(a, i, [&](Index j) {
+      if (joined[static_cast<std::size_t>(i)] < 0)
+        joined[static_cast<std::size_t>(i)] = of[static_cast<std::size_t>(j)];
+    });
+  }
+  of.swap(joined);
+  for (Index i = 0; i < n; ++i) {
+    if (of[static_cast<std::size_t>(i)] >= 0)
+      continue;
+    of[static_cast<std::size_t>(i)] = count;
+    for_each_strong(a, i, [&](Index j) {
+      if (of[static_cast<std::size_t>(j)] < 0)
+        of[static_cast<std::size_t>(j)] = count;
+    });
+    ++count;
+  }
+  return count;
+}
+
+// P^T A P with P_iI = 1 when unknown i is in aggregate I.
+Matrix galerkin(const Matrix& a, const std::vector<int>& of, int count) {
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(static_cast<std::size_t>(a.nonZeros()));
+  for (Index i = 0; i < a.rows(); ++i) {
+    const int row = of[static_cast<std::size_t>(i)];
+    for (Matrix::InnerIterator it(a, i); it; ++it)
+      entries.emplace_back(row, of[static_cast<std::size_t>(it.col())], it.value());
+  }
+  Matrix coarse(count, count);
+  coarse.setFromTriplets(entries.begin(), entries.end());
+  return coarse;
+}
+
+// r = b - A x, rows in parallel.
+void residual(const Matrix& a, const Vector& x, const Vector& b, Vector& r) {
+  const Index n = a.rows();
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) {
+    double sum = b[i];
+    for (Matrix::InnerIterator it(a, i); it; ++it)
+      sum -= it.value() * x[it.col()];
+    r[i] = sum;
+  }
+}
+
+}  // namespace
+
+void AggregationMultigrid::setup(Matrix a) {
+  levels_.clear();
+  coarsest_.reset();
+  info_ = Eigen::Success;
+  while (true) {
+    Level& level = levels_.emplace_back();
+    level.a = std::move(a);
+    level.a.makeCompressed();
+    const Index n = level.a.rows();
+    level.inverse_diagonal = level.a.diagonal().cwiseInverse();
+    level.x.resize(n);
+    level.b.resize(n);
+    level.r.resize(n);
+    if (n <= kCoarsestSize || levels_.size() == kMaxLevels)
+      break;
+    const int count = aggregate(level.a, level.aggregate);
+    if (count >= n)
+      break;
+    a = galerkin(level.a, level.aggregate, count);
+  }
+  if (levels_.back().a.rows() > kLargestDirectSize)
+    return;
+  coarsest_ = std::make_unique<Eigen::SparseLU<Eigen::SparseMatrix<double>>>();
+  coarsest_->compute(Eigen::SparseMatrix<double>(levels_.back().a));
+  info_ = coarsest_->info();
+}
+
+// The coarsest level directly, or, when the aggregation stalled above kLargestDirectSize
+// unknowns (a matrix without strong couplings), by Jacobi sweeps.
+void AggregationMultigrid::solve_coarsest(const Level& l) const {
+  if (coarsest_) {
+    l.x = coarsest_->solve(l.b);
+    return;
+  }
+  l.x = kJacobiWeight * l.inverse_diagonal.cwiseProduct(l.b);
+  for (int sweep = 1; sweep < kStalledSweeps; ++sweep) {
+    residual(l.a, l.x, l.b, l.r);
+    l.x += kJacobiWeight * l.inverse_diagonal.cwiseProduct(l.r);
+  }
+}
+
+// One V-cycle on levels_[level] for its b, into its x.
+void AggregationMultigrid::cycle(std::size_t level) const {
+  const Level& l = levels_[level];
+  if (level + 1 == levels_.size()) {
+    solve_coarsest(l);
+    return;
+  }
+  l.x = kJacobiWeight * l.inverse_diagonal.cwiseProduct(l.b);  // one sweep from x = 0
+  residual(l.a, l.x, l.b, l.r);
+  const Level& next = levels_[level + 1];
+  next.b.setZero();
+  for (Index i = 0; i < l.a.rows(); ++i)
+    next.b[l.aggregate[static_cast<std::size_t>(i)]] += l.r[i];
+  cycle(level + 1);
+  for (Index i = 0; i < l.a.rows(); ++i)
+    l.x[i] += kOverCorrection * next.x[l.aggregate[static_cast<std::size_t>(i)]];
+  residual(l.a, l.x, l.b, l.r);
+  l.x += kJacobiWeight * l.inverse_diagonal.cwiseProduct(l.r);
+}
+
+AggregationMultigrid::Vector AggregationMultigrid::solve(const Vector& b) const {
+  levels_.front().b = b;
+  cycle(0);
+  return levels_.front().x;
+}
+
+}  // namespace partimix
