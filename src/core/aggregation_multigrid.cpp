@@ -11,9 +11,9 @@ using Matrix = AggregationMultigrid::Matrix;
 using Vector = AggregationMultigrid::Vector;
 using Index = Eigen::Index;
 
-// docs/sph.md, "The pressure solve": the strength threshold, the size at which the levels stop
-// (and the largest one solved directly),
-// the weight of the one Jacobi sweep before and after the coarse step, and the coarse step's
+// docs/sph.md, "The pressure solve": the strength threshold, the size at which the levels stop,
+// the largest coarsest level solved directly (and the sweeps that stand in above it), the
+// weight of the one Jacobi sweep before and after the coarse step, and the coarse step's
 // over-correction.
 constexpr double kStrength = 0.5;
 constexpr Index kCoarsestSize = 500;

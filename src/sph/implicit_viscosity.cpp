@@ -45,6 +45,8 @@ void ImplicitViscosity::gather_pairs(const Fields& f, std::size_t fluid_count, c
   {
     const auto thread = static_cast<std::size_t>(omp_get_thread_num());
     std::vector<Partner>& local = thread_partners_[thread];
+    // A static schedule gives each thread one block of rows, in thread order, so the threads'
+    // lists joined in that order hold the rows in order.
 #pragma omp for schedule(static)
     for (std::ptrdiff_t ii = 0; ii < static_cast<std::ptrdiff_t>(fluid_count); ++ii) {
       const auto i = static_cast<std::size_t>(ii);
