@@ -6,8 +6,8 @@
 // Two things are asserted for the incompressible scheme with implicit viscosity (docs/power.md,
 // "The rotating plate in 2D"):
 // - the torque is within 9% of the reference at dp = 5 mm (6 spacings across the plate).
-//   Measured 2026-11-27: -6.6%; the error falls with the spacing (-17.2%, -10.2%, -7.2%, -6.3%
-//   at dp = 10, 7.5, 5, 3.75 mm with flow_cfl 0.2). Before the wall pressure of the
+//   Measured 2026-11-27: -6.6%; the error falls with the spacing at first order (-16.0%,
+//   -9.3%, -6.6%, -5.2%, -3.9% at dp = 10, 7.5, 5, 3.75, 2.5 mm). Before the wall pressure of the
 //   incompressible scheme was kept unfloored it was -11.1% at dp = 5 mm (flow_cfl 0.2).
 // - it does not depend on the time step: flow_cfl 0.4 within 3% of 0.1 (measured -2.2%). The
 //   non-incremental projection's steady state moved by 10% between these two steps (its slip at
