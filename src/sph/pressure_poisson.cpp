@@ -30,15 +30,17 @@ Vec3 relative_velocity(std::size_t i, std::size_t j, const Fields& f, const Para
 
 }  // namespace
 
-PressurePoisson::PressurePoisson(double tolerance, int max_iterations, bool incremental)
-    : incremental_(incremental) {
+PressurePoisson::PressurePoisson(double tolerance, int max_iterations, SetUp set_up)
+    : free_surface_(set_up.free_surface),
+      incremental_(set_up.implicit_viscosity && !set_up.free_surface) {
   solver_.setTolerance(tolerance);
   solver_.setMaxIterations(max_iterations);
 }
 
 // Row i: (sum_j A_ij) p_i - sum_j A_ij p_j = -rho0 (div u*)_i / dt [+ sum_j A_ij (p^n_i - p^n_j)
 // in the incremental form] with A_ij = -2 V_j (r_ij . grad_i W_ij) / (r_ij^2 + eta^2) >= 0, or
-// p_i = 0 at a free surface.
+// p_i = 0 at a free surface (only where the fluid had one at the start: in a closed vessel,
+// particles that part behind a plate are no surface).
 bool PressurePoisson::add_fluid_row(std::size_t i, const Fields& f, const CellGrid& grid,
                                     const KernelTable& kernel, const Parameters& p, double dt,
                                     Entries& entries) {
@@ -62,7 +64,7 @@ bool PressurePoisson::add_fluid_row(std::size_t i, const Fields& f, const CellGr
     position_divergence -= volume * r_dot_grad;
   });
   const auto row = static_cast<int>(i);
-  if (at_free_surface(position_divergence, p.dimensions)) {
+  if (free_surface_ && at_free_surface(position_divergence, p.dimensions)) {
     entries.resize(first);
     entries.emplace_back(row, row, 1.0);
     rhs_[row] = 0.0;

@@ -19,9 +19,15 @@ namespace partimix::sph {
 
 class PressurePoisson {
  public:
-  // incremental: the predicted velocities carry -dt grad p^n and the solve is for the increment
-  // (with implicit viscosity, docs/sph.md "Incompressible SPH"); otherwise they carry no pressure.
-  PressurePoisson(double tolerance, int max_iterations, bool incremental);
+  // What the fluid is (docs/sph.md, "Incompressible SPH"): with a free surface at the start the
+  // rows of particles found at a surface hold p = 0; a closed vessel has none. With implicit
+  // viscosity in a closed vessel the form is incremental: the predicted velocities carry
+  // -dt grad p^n and the solve is for the increment; otherwise they carry no pressure.
+  struct SetUp {
+    bool free_surface = true;
+    bool implicit_viscosity = false;
+  };
+  PressurePoisson(double tolerance, int max_iterations, SetUp set_up);
 
   // Fluid particles are [0, fluid_count) of the fields, with the predicted velocities and the
   // grid built at their predicted positions; walls the rest, with their own velocities. Writes
@@ -60,6 +66,7 @@ class PressurePoisson {
   Eigen::BiCGSTAB<Matrix, AggregationMultigrid> solver_;
   bool has_dirichlet_row_ = false;
   double mean_offset_ = 0.0;  // the constant taken off the last solution: the next one's guess
+  bool free_surface_;
   bool incremental_;
   std::vector<double> increment_;  // the projection's pressure of every particle
 };

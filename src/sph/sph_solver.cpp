@@ -153,11 +153,10 @@ SphSolver::SphSolver(ParticleStore& store, const Domain& domain, const Config& c
     viscous_.emplace(config.pressure_tolerance, config.pressure_iterations);
   }
   if (config.scheme == "incompressible") {
-    // The incremental form with implicit viscosity, in a closed vessel only (docs/sph.md,
-    // "Incompressible SPH", "Why two forms").
-    const bool incremental =
-        viscous_.has_value() && !has_free_surface(store, domain, config.spacing);
-    poisson_.emplace(config.pressure_tolerance, config.pressure_iterations, incremental);
+    poisson_.emplace(
+        config.pressure_tolerance, config.pressure_iterations,
+        PressurePoisson::SetUp{.free_surface = has_free_surface(store, domain, config.spacing),
+                               .implicit_viscosity = viscous_.has_value()});
     flow_speed_estimate_ = estimated_max_velocity(config, store, parameters_.hydrostatic_gravity);
     parameters_.diffusion = DensityDiffusion::none;
   }
