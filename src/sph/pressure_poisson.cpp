@@ -12,15 +12,14 @@ namespace partimix::sph {
 
 namespace {
 
-// u*_i - u_j; against a wall in the non-incremental form, less the velocity dt (g - a_w) that
-// gravity and the wall's own acceleration gave the fluid in this step: the wall's extrapolated
-// pressure (its row) already carries that part (docs/sph.md, "Incompressible SPH"), as it does in
-// the weakly-compressible solver, whose continuity equation sees only the fluid's actual motion
-// against the wall. In the incremental form u* carries it through grad p^n.
+// u*_i - u_j; against a wall, less the velocity dt (g - a_w) that gravity and the wall's own
+// acceleration gave the fluid in this step: the wall's extrapolated pressure (its row) already
+// carries that part (docs/sph.md, "Incompressible SPH"), as it does in the weakly-compressible
+// solver, whose continuity equation sees only the fluid's actual motion against the wall.
 Vec3 relative_velocity(std::size_t i, std::size_t j, const Fields& f, const Parameters& p,
-                       double dt, bool incremental) {
+                       double dt) {
   const Vec3 relative = f.velocity[i] - f.velocity[j];
-  if (incremental || is_fluid(f.kind[j]))
+  if (is_fluid(f.kind[j]))
     return relative;
   Vec3 relative_gravity = p.gravity;
   if (f.body_acceleration != nullptr)
@@ -30,17 +29,13 @@ Vec3 relative_velocity(std::size_t i, std::size_t j, const Fields& f, const Para
 
 }  // namespace
 
-PressurePoisson::PressurePoisson(double tolerance, int max_iterations, SetUp set_up)
-    : free_surface_(set_up.free_surface),
-      incremental_(set_up.implicit_viscosity && !set_up.free_surface) {
+PressurePoisson::PressurePoisson(double tolerance, int max_iterations) {
   solver_.setTolerance(tolerance);
   solver_.setMaxIterations(max_iterations);
 }
 
-// Row i: (sum_j A_ij) p_i - sum_j A_ij p_j = -rho0 (div u*)_i / dt [+ sum_j A_ij (p^n_i - p^n_j)
-// in the incremental form] with A_ij = -2 V_j (r_ij . grad_i W_ij) / (r_ij^2 + eta^2) >= 0, or
-// p_i = 0 at a free surface (only where the fluid had one at the start: in a closed vessel,
-// particles that part behind a plate are no surface).
+// Row i: (sum_j A_ij) p_i - sum_j A_ij p_j = -rho0 (div u*)_i / dt with
+// A_ij = -2 V_j (r_ij . grad_i W_ij) / (r_ij^2 + eta^2) >= 0, or p_i = 0 at a free surface.
 bool PressurePoisson::add_fluid_row(std::size_t i, const Fields& f, const CellGrid& grid,
                                     const KernelTable& kernel, const Parameters& p, double dt,
                                     Entries& entries) {
@@ -48,7 +43,6 @@ bool PressurePoisson::add_fluid_row(std::size_t i, const Fields& f, const CellGr
   double diagonal = 0.0;
   double divergence = 0.0;
   double position_divergence = 0.0;
-  double old_laplacian = 0.0;
   grid.for_each_neighbour(i, f.position, [&](std::size_t j, const Vec3& r_ij, double r2) {
     if (j == i)
       return;
@@ -59,19 +53,18 @@ bool PressurePoisson::add_fluid_row(std::size_t i, const Fields& f, const CellGr
     const double a_ij = -2.0 * volume * r_dot_grad / (r2 + p.eta2);
     entries.emplace_back(static_cast<int>(i), static_cast<int>(j), -a_ij);
     diagonal += a_ij;
-    old_laplacian += a_ij * (f.pressure[i] - f.pressure[j]);
-    divergence -= volume * relative_velocity(i, j, f, p, dt, incremental_).dot(grad);
+    divergence -= volume * relative_velocity(i, j, f, p, dt).dot(grad);
     position_divergence -= volume * r_dot_grad;
   });
   const auto row = static_cast<int>(i);
-  if (free_surface_ && at_free_surface(position_divergence, p.dimensions)) {
+  if (at_free_surface(position_divergence, p.dimensions)) {
     entries.resize(first);
     entries.emplace_back(row, row, 1.0);
     rhs_[row] = 0.0;
     return true;
   }
   entries.emplace_back(row, row, diagonal);
-  rhs_[row] = -p.reference_density * divergence / dt + (incremental_ ? old_laplacian : 0.0);
+  rhs_[row] = -p.reference_density * divergence / dt;
   return false;
 }
 
@@ -170,35 +163,30 @@ LinearSolve PressurePoisson::solve(Fields& f, std::size_t fluid_count, const Cel
     mean /= static_cast<double>(fluid_count);
     mean_offset_ = mean;
   }
-  increment_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const double updated = solution_[static_cast<Eigen::Index>(i)] - mean;
-    increment_[i] = incremental_ ? updated - f.pressure[i] : updated;
-    f.pressure[i] = updated;
+    f.pressure[i] = solution_[static_cast<Eigen::Index>(i)] - mean;
     f.density[i] = p.reference_density;
   }
   return {static_cast<int>(solver_.iterations()), solver_.error(),
           solver_.info() == Eigen::Success};
 }
 
-void subtract_pressure_gradient(const std::vector<double>& pressure, const Fields& f,
-                                std::size_t fluid_count, const CellGrid& grid,
-                                const KernelTable& kernel, const Parameters& p, double dt,
-                                std::vector<Vec3>& velocity) {
+void project_velocities(Fields& f, std::size_t fluid_count, const CellGrid& grid,
+                        const KernelTable& kernel, const Parameters& p, double dt) {
   const double rho2 = p.reference_density * p.reference_density;
   const auto n = static_cast<std::ptrdiff_t>(fluid_count);
 #pragma omp parallel for schedule(dynamic, 512)
   for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
     const auto i = static_cast<std::size_t>(ii);
-    Vec3 gradient = Vec3::Zero();  // grad q_i / rho0
+    Vec3 gradient = Vec3::Zero();  // grad p_i / rho0
     grid.for_each_neighbour(i, f.position, [&](std::size_t j, const Vec3& r_ij, double r2) {
       if (j == i)
         return;
       const double r = std::sqrt(r2);
       gradient +=
-          (f.mass[j] * (pressure[i] + pressure[j]) / rho2 * kernel.derivative(r) / r) * r_ij;
+          (f.mass[j] * (f.pressure[i] + f.pressure[j]) / rho2 * kernel.derivative(r) / r) * r_ij;
     });
-    velocity[i] -= dt * gradient;
+    f.velocity[i] -= dt * gradient;
   }
 }
 

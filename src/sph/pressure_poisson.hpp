@@ -19,27 +19,15 @@ namespace partimix::sph {
 
 class PressurePoisson {
  public:
-  // What the fluid is (docs/sph.md, "Incompressible SPH"): with a free surface at the start the
-  // rows of particles found at a surface hold p = 0; a closed vessel has none. With implicit
-  // viscosity in a closed vessel the form is incremental: the predicted velocities carry
-  // -dt grad p^n and the solve is for the increment; otherwise they carry no pressure.
-  struct SetUp {
-    bool free_surface = true;
-    bool implicit_viscosity = false;
-  };
-  PressurePoisson(double tolerance, int max_iterations, SetUp set_up);
+  PressurePoisson(double tolerance, int max_iterations);
 
   // Fluid particles are [0, fluid_count) of the fields, with the predicted velocities and the
   // grid built at their predicted positions; walls the rest, with their own velocities. Writes
-  // every particle's pressure (fluid and wall) and sets wall densities to rho0. The pressures the
-  // fields hold on entry are p^n; increment() is the pressure the projection takes:
-  // p^(n+1) - p^n in the incremental form, p^(n+1) otherwise.
+  // every particle's pressure (fluid and wall) and sets wall densities to rho0.
   // `kernel` weighs the wall extrapolation, `gradient_kernel` the Laplacian and divergence.
   LinearSolve solve(Fields& fields, std::size_t fluid_count, const CellGrid& grid,
                     const KernelTable& kernel, const KernelTable& gradient_kernel,
                     const Parameters& parameters, double dt);
-  const std::vector<double>& increment() const { return increment_; }
-  bool incremental() const { return incremental_; }
 
  private:
   using Entries = std::vector<Eigen::Triplet<double>>;
@@ -66,16 +54,11 @@ class PressurePoisson {
   Eigen::BiCGSTAB<Matrix, AggregationMultigrid> solver_;
   bool has_dirichlet_row_ = false;
   double mean_offset_ = 0.0;  // the constant taken off the last solution: the next one's guess
-  bool free_surface_;
-  bool incremental_;
-  std::vector<double> increment_;  // the projection's pressure of every particle
 };
 
-// velocity_i -= dt sum_j m_j (q_i + q_j) / rho0^2 grad_i W_ij for the fluid particles, q the
-// given pressure field of every particle (grid at the current positions).
-void subtract_pressure_gradient(const std::vector<double>& pressure, const Fields& fields,
-                                std::size_t fluid_count, const CellGrid& grid,
-                                const KernelTable& kernel, const Parameters& parameters, double dt,
-                                std::vector<Vec3>& velocity);
+// u_i -= dt sum_j m_j (p_i + p_j) / rho0^2 grad_i W_ij for the fluid particles (pressures of
+// this instant, grid at the current positions).
+void project_velocities(Fields& fields, std::size_t fluid_count, const CellGrid& grid,
+                        const KernelTable& kernel, const Parameters& parameters, double dt);
 
 }  // namespace partimix::sph

@@ -10,7 +10,6 @@
 #include "particles/store_state.hpp"
 #include "sph/eos/incompressible_eos.hpp"
 #include "sph/fluid_rates.hpp"
-#include "sph/free_surface.hpp"
 #include "sph/particle_shifting.hpp"
 #include "sph/shear_rate.hpp"
 #include "sph/shepard_filter.hpp"
@@ -153,10 +152,7 @@ SphSolver::SphSolver(ParticleStore& store, const Domain& domain, const Config& c
     viscous_.emplace(config.pressure_tolerance, config.pressure_iterations);
   }
   if (config.scheme == "incompressible") {
-    poisson_.emplace(
-        config.pressure_tolerance, config.pressure_iterations,
-        PressurePoisson::SetUp{.free_surface = has_free_surface(store, domain, config.spacing),
-                               .implicit_viscosity = viscous_.has_value()});
+    poisson_.emplace(config.pressure_tolerance, config.pressure_iterations);
     flow_speed_estimate_ = estimated_max_velocity(config, store, parameters_.hydrostatic_gravity);
     parameters_.diffusion = DensityDiffusion::none;
   }
@@ -187,8 +183,8 @@ void SphSolver::update_body_forces() {
                       {*body_force_, *body_couple_});
 }
 
-// The fluid starts at rest at its hydrostatic pressure (the incompressible scheme's first
-// pressure gradient, docs/sph.md "Incompressible SPH"; the weakly-compressible one's density).
+// The fluid starts at rest at its hydrostatic pressure (the incompressible scheme's first guess
+// of the pressure solve; the weakly-compressible one's density).
 void SphSolver::initialise_fluid() {
   const double volume = std::pow(parameters_.spacing, domain_.dimensions);
   const Vec3& g = parameters_.hydrostatic_gravity;
@@ -356,8 +352,7 @@ void SphSolver::advance_incompressible(double dt) {
   stop_unless_converged(poisson_->solve(fields_, fluid_count_, grid_, kernel_table_,
                                         gradient_table_, parameters_, dt),
                         "the pressure Poisson equation");
-  subtract_pressure_gradient(poisson_->increment(), fields_, fluid_count_, grid_, gradient_table_,
-                             parameters_, dt, fields_.velocity);
+  project_velocities(fields_, fluid_count_, grid_, gradient_table_, parameters_, dt);
   for (std::size_t i = 0; i < fluid_count_; ++i) {
     fields_.acceleration[i] = (fields_.velocity[i] - start_velocity_[i]) / dt;
     fields_.position[i] =
@@ -394,12 +389,8 @@ void SphSolver::predict_viscous_explicit(double dt) {
 // solve allowed the viscosities are those of the end of the last step (refresh_incompressible).
 void SphSolver::predict_viscous_implicit(double dt) {
   viscous_->gather_pairs(fields_, fluid_count_, grid_, gradient_table_, parameters_);
-  predictor_start_.assign(start_velocity_.begin(), start_velocity_.end());
-  if (poisson_->incremental())
-    subtract_pressure_gradient(fields_.pressure, fields_, fluid_count_, grid_, gradient_table_,
-                               parameters_, dt, predictor_start_);
   for (int iteration = 0; iteration < config_.viscosity_iterations; ++iteration) {
-    stop_unless_converged(viscous_->solve(fields_, fluid_count_, parameters_, predictor_start_, dt),
+    stop_unless_converged(viscous_->solve(fields_, fluid_count_, parameters_, start_velocity_, dt),
                           "the implicit viscosity solve");
     if (newtonian_ || config_.viscosity_iterations == 1 || !update_apparent_viscosity())
       return;

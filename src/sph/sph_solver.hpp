@@ -101,7 +101,6 @@ class SphSolver final : public Solver {
   std::vector<std::uint32_t> sort_order_;
   std::vector<Vec3> start_position_;
   std::vector<Vec3> start_velocity_;
-  std::vector<Vec3> predictor_start_;  // u^n - dt grad p^n / rho0 of the implicit prediction
   std::vector<double> start_density_;
   std::vector<double> scratch_;
   ShiftingScratch shifting_;
