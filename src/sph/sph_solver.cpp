@@ -183,8 +183,6 @@ void SphSolver::update_body_forces() {
                       {*body_force_, *body_couple_});
 }
 
-// The fluid starts at rest at its hydrostatic pressure (the incompressible scheme's first guess
-// of the pressure solve; the weakly-compressible one's density).
 void SphSolver::initialise_fluid() {
   const double volume = std::pow(parameters_.spacing, domain_.dimensions);
   const Vec3& g = parameters_.hydrostatic_gravity;
@@ -201,8 +199,7 @@ void SphSolver::initialise_fluid() {
     fields_.density[i] = parameters_.reference_density;
     if (store_.is_fluid(i) && g_norm > 0.0) {
       const double depth = top + g.dot(fields_.position[i]) / g_norm;
-      fields_.pressure[i] = parameters_.reference_density * g_norm * depth;
-      fields_.density[i] = eos_->density(fields_.pressure[i]);
+      fields_.density[i] = eos_->density(parameters_.reference_density * g_norm * depth);
     }
   }
   wrap_positions();

@@ -4,8 +4,10 @@
 // (tools/stokes_plate_reference.py: 23.740, 23.433, 23.316 with 20, 40, 80 rays a quarter turn,
 // extrapolated 23.24; the same script gives the Couette torque of a circle within 1e-3).
 // Asserted for the incompressible scheme with implicit viscosity (docs/power.md, "The rotating
-// plate in 2D"): the torque at dp = 5 mm (6 spacings across the plate) within 8% of the
-// reference, and its error smaller than at dp = 7.5 mm.
+// plate in 2D"), whose wall treatment is first order in the spacing: the error at dp = 5 mm
+// (6 spacings across the plate) at most 3/4 of that at 7.5 mm (first order: 2/3), and within
+// 8% of the reference (7.1%, the first-order extrapolation of the error at 7.5 mm, plus a
+// margin for the time step's share below).
 // Measured 2026-11-27: -10.7% and -5.1% (-19.1%, -2.1% at dp = 10 and 3.75 mm). Before the
 // incompressible scheme's wall pressure was kept unfloored: -11.1% at dp = 5 mm (flow_cfl 0.2).
 // Known weakness, not asserted: the torque depends on the step (at dp = 5 mm -6.3%, -5.1%,
@@ -43,7 +45,7 @@ TEST(RotatingPlate, IncompressibleTorqueApproachesStokesFlow) {
   const double coarse = torque_error("0.0075");
   const double fine = torque_error("0.005");
   EXPECT_LT(std::abs(fine), 0.08);
-  EXPECT_LT(std::abs(fine), std::abs(coarse));
+  EXPECT_LT(std::abs(fine), 0.75 * std::abs(coarse));
 }
 
 }  // namespace
