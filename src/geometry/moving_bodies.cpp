@@ -10,7 +10,9 @@ MovingBodies::MovingBodies(ParticleStore& store, const Domain& domain)
       body_(store.add_integer("body", "").values),
       start_position_(store.add_vector("start_position", "m", false).values),
       angular_velocity_(store.add_vector("angular_velocity", "rad/s", false).values),
-      acceleration_(store.add_vector("body_acceleration", "m/s^2", false).values) {
+      acceleration_(store.add_vector("body_acceleration", "m/s^2", false).values),
+      surface_normal_(store.add_vector("surface_normal", "", false).values),
+      start_surface_normal_(store.add_vector("start_surface_normal", "", false).values) {
   std::fill(body_.begin(), body_.end(), -1);
 }
 
@@ -19,6 +21,7 @@ void MovingBodies::add_body(std::size_t first, std::unique_ptr<Motion> motion) {
   for (std::size_t i = first; i < store_.size(); ++i) {
     body_[i] = index;
     start_position_[i] = store_.position()[i];
+    start_surface_normal_[i] = surface_normal_[i];
   }
   const bool moving = motion->moves();
   moving_.push_back(moving);
@@ -52,6 +55,7 @@ void MovingBodies::move_to(double time) {
     position[i] = poses_[b].place(start);
     velocity[i] = poses_[b].velocity_at(position[i]);
     angular_velocity_[i] = poses_[b].angular_velocity;
+    surface_normal_[i] = poses_[b].rotation * start_surface_normal_[i];
     const Vec3 before = poses_before_[b].velocity_at(poses_before_[b].place(start));
     const Vec3 after = poses_after_[b].velocity_at(poses_after_[b].place(start));
     acceleration_[i] = (after - before) / (2.0 * kAccelerationStep);

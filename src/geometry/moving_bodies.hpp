@@ -5,7 +5,8 @@
 // body is a closed-form placement at any time, with no drift from integrating velocities. Its
 // angular velocity (field "angular_velocity") lets wall treatments extend the body's rigid
 // velocity field into the fluid, and its acceleration (field "body_acceleration") enters the
-// wall pressure (docs/sph.md, "Walls").
+// wall pressure (docs/sph.md, "Walls"). Its surface normal (field "surface_normal", set by the
+// method that lays the particles before add_body, zero where it has none) turns with the body.
 #include <algorithm>
 #include <memory>
 #include <vector>
@@ -18,8 +19,8 @@ namespace partimix::geometry {
 
 class MovingBodies {
  public:
-  // Adds the "body", "start_position", "angular_velocity" and "body_acceleration" fields to
-  // `store` (body -1 for all particles).
+  // Adds the "body", "start_position", "angular_velocity", "body_acceleration" and
+  // "surface_normal" fields to `store` (body -1 for all particles).
   MovingBodies(ParticleStore& store, const Domain& domain);
 
   // Makes particles [first, store size) the particles of a new body with `motion`. Call after
@@ -47,6 +48,8 @@ class MovingBodies {
   std::vector<Vec3>& start_position_;
   std::vector<Vec3>& angular_velocity_;
   std::vector<Vec3>& acceleration_;
+  std::vector<Vec3>& surface_normal_;
+  std::vector<Vec3>& start_surface_normal_;
   std::vector<std::unique_ptr<Motion>> motions_;
   std::vector<bool> moving_;
   bool any_moving_ = false;

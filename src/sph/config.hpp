@@ -53,6 +53,7 @@ struct Config {
   Shifting shifting;
   std::optional<int> wall_layers;       // when absent, enough layers to cover the kernel support
   bool negative_wall_pressure = false;  // false: p_w = max(p_w, 0) (free-surface flows)
+  std::string wall_velocity = "adami";  // adami | extrapolated: the no-slip ghost velocity
   TimeStepFactors time_step;
   int sort_interval = 20;  // re-sort particles by cell every N steps
   // sph.lattice: particles on rings about this point's z-parallel axis (geometry/lattice.hpp);

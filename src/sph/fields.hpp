@@ -17,6 +17,16 @@ inline const std::vector<Vec3>* body_acceleration_of(const ParticleStore& store)
   return field != nullptr ? &field->values : nullptr;
 }
 
+inline const std::vector<double>* scalars_of(const ParticleStore& store, const std::string& name) {
+  const Field<double>* field = store.find_scalar(name);
+  return field != nullptr ? &field->values : nullptr;
+}
+
+inline const std::vector<Vec3>* vectors_of(const ParticleStore& store, const std::string& name) {
+  const Field<Vec3>* field = store.find_vector(name);
+  return field != nullptr ? &field->values : nullptr;
+}
+
 inline const std::vector<std::int32_t>* integers_of(const ParticleStore& store,
                                                     const std::string& name) {
   const Field<std::int32_t>* field = store.find_integer(name);
@@ -34,12 +44,15 @@ struct Fields {
         density_rate(store.add_scalar("density_rate", "kg/(m^3 s)", false).values),
         acceleration(store.add_vector("acceleration", "m/s^2", false).values),
         wall_velocity(store.add_vector("wall_velocity", "m/s", false).values),
+        ghost_weight(store.add_scalar("ghost_weight", "m^d", false).values),
         viscosity(store.add_scalar("viscosity", "Pa s").values),
         shear_rate(store.add_scalar("shear_rate", "1/s").values),
         angular_velocity(angular_velocity_of(store)),
         body_acceleration(body_acceleration_of(store)),
         body(integers_of(store, "body")),
-        solid(integers_of(store, "solid")) {}
+        solid(integers_of(store, "solid")),
+        surface_depth(scalars_of(store, "surface_depth")),
+        surface_normal(vectors_of(store, "surface_normal")) {}
 
   std::vector<std::int32_t>& kind;
   std::vector<Vec3>& position;
@@ -50,8 +63,11 @@ struct Fields {
   std::vector<double>& density_rate;
   std::vector<Vec3>& acceleration;
   std::vector<Vec3>& wall_velocity;  // wall particles: the no-slip ghost velocity (Adami 2012)
-  std::vector<double>& viscosity;    // apparent viscosity eta_a of fluid particles
-  std::vector<double>& shear_rate;   // gamma_dot of fluid particles
+  // Wall particles: beta_w / sum_f W_wf, so that a fluid particle f's velocity enters the ghost
+  // velocity as -ghost_weight W_wf u_f (sph/wall_state.hpp); 0 for walls that see no fluid.
+  std::vector<double>& ghost_weight;
+  std::vector<double>& viscosity;   // apparent viscosity eta_a of fluid particles
+  std::vector<double>& shear_rate;  // gamma_dot of fluid particles
   // Wall particles of moving bodies: the body's angular velocity (geometry/moving_bodies.hpp);
   // null when the store has no bodies.
   const std::vector<Vec3>* angular_velocity;
@@ -60,6 +76,11 @@ struct Fields {
   // 1 for the particles of a solid body (sph/particle_generation.cpp); null when the particles
   // were not generated from a case's walls.
   const std::vector<std::int32_t>* solid;
+  // Wall particles: depth below the wall's surface and its unit normal towards the fluid (zero
+  // where unknown), for the extrapolated ghost velocity (sph/particle_generation.cpp); null when
+  // the particles were not generated from a case's walls.
+  const std::vector<double>* surface_depth;
+  const std::vector<Vec3>* surface_normal;
   // Viscous stress tau = 2 eta_a S of every particle, for the stress-form viscous operator only
   // (empty otherwise). Recomputed at every interaction, so it is not part of the store.
   std::vector<Mat3> viscous_stress;

@@ -17,24 +17,26 @@ ImplicitViscosity::ImplicitViscosity(double tolerance, int max_iterations) {
 // Row i's partners: fluid ones and the diagonal sorted by index, then the walls (whose indices
 // follow the fluid's).
 void ImplicitViscosity::gather_row(std::size_t i, const Fields& f, const CellGrid& grid,
-                                   const KernelTable& kernel, const Parameters& p,
-                                   std::vector<Partner>& out) {
+                                   const KernelTable& kernel, const KernelTable& gradient_kernel,
+                                   const Parameters& p, std::vector<Partner>& out) {
   const double rho2 = p.reference_density * p.reference_density;
   const std::size_t first = out.size();
-  out.push_back({static_cast<std::uint32_t>(i), 0.0});
+  out.push_back({static_cast<std::uint32_t>(i), 0.0, 0.0});
   grid.for_each_neighbour(i, f.position, [&](std::size_t j, const Vec3&, double r2) {
     if (j == i)
       return;
     const double r = std::sqrt(r2);
-    const double factor = f.mass[j] * -(r * kernel.derivative(r)) / (rho2 * (r2 + p.eta2));
-    out.push_back({static_cast<std::uint32_t>(j), factor});
+    const double factor = f.mass[j] * -(r * gradient_kernel.derivative(r)) / (rho2 * (r2 + p.eta2));
+    const double weight = is_fluid(f.kind[j]) ? 0.0 : kernel.value(r);
+    out.push_back({static_cast<std::uint32_t>(j), factor, weight});
   });
   std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(),
             [](const Partner& a, const Partner& b) { return a.index < b.index; });
 }
 
 void ImplicitViscosity::gather_pairs(const Fields& f, std::size_t fluid_count, const CellGrid& grid,
-                                     const KernelTable& kernel, const Parameters& p) {
+                                     const KernelTable& kernel, const KernelTable& gradient_kernel,
+                                     const Parameters& p) {
   const auto threads = static_cast<std::size_t>(omp_get_max_threads());
   thread_partners_.resize(threads);
   for (std::vector<Partner>& local : thread_partners_)
@@ -51,7 +53,7 @@ void ImplicitViscosity::gather_pairs(const Fields& f, std::size_t fluid_count, c
     for (std::ptrdiff_t ii = 0; ii < static_cast<std::ptrdiff_t>(fluid_count); ++ii) {
       const auto i = static_cast<std::size_t>(ii);
       const std::size_t before = local.size();
-      gather_row(i, f, grid, kernel, p, local);
+      gather_row(i, f, grid, kernel, gradient_kernel, p, local);
       row_start_[i + 1] = local.size() - before;
       const auto walls =
           std::find_if(local.begin() + static_cast<std::ptrdiff_t>(before), local.end(),
@@ -86,9 +88,13 @@ void ImplicitViscosity::lay_out_matrix(std::size_t fluid_count) {
   matrix_.outerIndexPtr()[fluid_count] = static_cast<int>(k);
 }
 
-// Row i: (1 + dt sum_j c_ij) u*_i - dt sum_(j fluid) c_ij u*_j
-//        = u^n_i + dt g + dt sum_(w wall) c_iw u~_w,
+// Row i: (1 + dt sum_j c_ij (1 + a_ij)) u*_i - dt sum_(j fluid) c_ij u*_j
+//        = u^n_i + dt g + dt sum_(w wall) c_iw (u~_w + a_iw u^n_i),
 // c_ij = factor_ij times the pair viscosity (eta_i + eta_j or its harmonic form; eta_w = eta_i).
+// The ghost velocity u~_w, from the velocities of u^n, holds -a_iw u^n_i, a_iw = beta_w W_iw /
+// sum_f W_wf (sph/wall_state.hpp): that share is taken at u*_i instead (a_ij = 0 for the fluid),
+// so the ghost velocity's lag cannot feed a particle's own velocity back into itself
+// (docs/sph.md, "Implicit viscosity").
 void ImplicitViscosity::fill_row(std::size_t i, const Fields& f, const Parameters& p,
                                  const Vec3& start, double dt) {
   const double eta_i = f.viscosity[i];
@@ -110,8 +116,9 @@ void ImplicitViscosity::fill_row(std::size_t i, const Fields& f, const Parameter
   for (std::size_t q = wall_start_[i]; q < row_start_[i + 1]; ++q) {
     const Partner& w = partners_[q];
     const double c_iw = w.factor * eta_wall;
-    diagonal += dt * c_iw;
-    rhs += (dt * c_iw) * f.wall_velocity[w.index];
+    const double own_share = w.weight * f.ghost_weight[w.index];
+    diagonal += dt * c_iw * (1.0 + own_share);
+    rhs += (dt * c_iw) * (f.wall_velocity[w.index] + own_share * start);
   }
   *diagonal_value = diagonal;
   rhs_.row(static_cast<Eigen::Index>(i)) = rhs.transpose();

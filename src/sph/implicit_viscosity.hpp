@@ -24,9 +24,11 @@ class ImplicitViscosity {
 
   // Fluid particles are [0, fluid_count) of the fields, at x^n; the grid built there. Gathers
   // each fluid particle's partners and the factors m_j (-r_ij . grad W_ij) / (rho0^2 (r^2 +
-  // eta^2)) of its pair coefficients, and lays out the matrix.
+  // eta^2)) of its pair coefficients (with `gradient_kernel`), the kernel values W_iw of its wall
+  // partners (with `kernel`, the wall state's), and lays out the matrix.
   void gather_pairs(const Fields& fields, std::size_t fluid_count, const CellGrid& grid,
-                    const KernelTable& gradient_kernel, const Parameters& parameters);
+                    const KernelTable& kernel, const KernelTable& gradient_kernel,
+                    const Parameters& parameters);
   // With the fluid's apparent viscosities of now; `start` holds u^n. Writes u* into the fluid
   // particles' velocities.
   LinearSolve solve(Fields& fields, std::size_t fluid_count, const Parameters& parameters,
@@ -36,9 +38,11 @@ class ImplicitViscosity {
   struct Partner {
     std::uint32_t index;  // a fluid particle's (the row's own for the diagonal) or a wall's
     double factor;        // the pair coefficient over the pair viscosity; 0 on the diagonal
+    double weight;        // a wall's kernel value W_iw; 0 for the fluid
   };
   void gather_row(std::size_t i, const Fields& f, const CellGrid& grid, const KernelTable& kernel,
-                  const Parameters& p, std::vector<Partner>& out);
+                  const KernelTable& gradient_kernel, const Parameters& p,
+                  std::vector<Partner>& out);
   void lay_out_matrix(std::size_t fluid_count);
   void fill_row(std::size_t i, const Fields& f, const Parameters& p, const Vec3& start, double dt);
 

@@ -25,6 +25,9 @@ struct Parameters {
   DensityDiffusion diffusion = DensityDiffusion::fourtakas;
   double delta = 0.1;
   bool negative_wall_pressure = false;  // false: the wall pressure is kept >= 0
+  // Ghost velocity by linear extrapolation with the wall particle's depth (docs/sph.md, "Walls");
+  // false: Adami et al.'s mirror of the fluid's mean.
+  bool extrapolated_wall_velocity = false;
 };
 
 }  // namespace partimix::sph

@@ -143,6 +143,32 @@ std::optional<std::string> see_through(const io::Case& the_case, const Config& c
       w, thickness, support, spacing * thickness / support);
 }
 
+// The depth below its wall's surface and the surface's unit normal towards the fluid of each
+// wall particle from `first` on (fields "surface_depth" and "surface_normal"), from the wall
+// shape's signed distance and its gradient by central differences; the extrapolated ghost
+// velocity needs both (docs/sph.md, "Walls"). Where the gradient vanishes (a body's medial
+// axis) the normal is left zero.
+void mark_surface(const io::WallSpec& wall, int dimensions, double spacing, std::size_t first,
+                  ParticleStore& store) {
+  std::vector<double>& depth = store.find_scalar("surface_depth")->values;
+  std::vector<Vec3>& normal = store.find_vector("surface_normal")->values;
+  const double step = 1e-3 * spacing;
+  const double towards_fluid = wall.solid ? 1.0 : -1.0;
+  for (std::size_t i = first; i < store.size(); ++i) {
+    const Vec3& x = store.position()[i];
+    Vec3 gradient = Vec3::Zero();
+    for (int axis = 0; axis < dimensions; ++axis) {
+      const Vec3 offset = step * Vec3::Unit(axis);
+      gradient[axis] =
+          (wall.shape->signed_distance(x + offset) - wall.shape->signed_distance(x - offset)) /
+          (2.0 * step);
+    }
+    depth[i] = std::abs(wall.shape->signed_distance(x));
+    const double length = gradient.norm();
+    normal[i] = length > 0.5 ? Vec3((towards_fluid / length) * gradient) : Vec3::Zero();
+  }
+}
+
 // Tag 1 for the tracer fluid (fluid.tracer), 0 for the rest: the mixing analyses and the colour
 // of the VTK frames (field "tag").
 void tag_tracer(const FluidSpec& fluid, ParticleStore& store) {
@@ -185,6 +211,7 @@ void generate_particles(const io::Case& the_case, const SphSection& section,
   }
   instance.bodies = std::make_unique<geometry::MovingBodies>(store, the_case.domain);
   std::vector<std::int32_t>& solid = store.add_integer("solid", "", false).values;
+  store.add_scalar("surface_depth", "m", false);
   for (std::size_t w = 0; w < the_case.walls.size(); ++w) {
     const io::WallSpec& wall = the_case.walls[w];
     const std::size_t first = store.size();
@@ -198,6 +225,7 @@ void generate_particles(const io::Case& the_case, const SphSection& section,
     }
     append(store, points, ParticleKind::wall);
     mark_solid(solid, first, wall.solid);
+    mark_surface(wall, the_case.domain.dimensions, section.config.spacing, first, store);
     auto motion = geometry::motion_registry().create(wall.motion.type, wall.motion);
     if (!motion) {
       throw io::case_error(the_case, fmt::format("walls[{}].motion.type", w),

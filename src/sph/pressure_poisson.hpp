@@ -29,6 +29,11 @@ class PressurePoisson {
                     const KernelTable& kernel, const KernelTable& gradient_kernel,
                     const Parameters& parameters, double dt);
 
+  // The constant taken off the last solution without a free surface, which the next solve adds
+  // to its first guess: part of a checkpoint, so that a resumed run solves as the whole one.
+  double mean_offset() const { return mean_offset_; }
+  void set_mean_offset(double offset) { mean_offset_ = offset; }
+
  private:
   using Entries = std::vector<Eigen::Triplet<double>>;
   // add_fluid_row returns true for a Dirichlet row (p = 0 at a free surface).

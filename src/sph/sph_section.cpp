@@ -99,6 +99,8 @@ Config read_config(Reader& root, const Domain& domain) {
   config.wall_layers = section.automatic<int>("wall_layers", at_least(1));
   config.negative_wall_pressure =
       section.optional<bool>("negative_wall_pressure", config.negative_wall_pressure);
+  config.wall_velocity =
+      section.choice("wall_velocity", config.wall_velocity, {"adami", "extrapolated"});
   config.time_step = read_time_step(section);
   config.sort_interval = section.optional<int>("sort_interval", config.sort_interval, at_least(1));
   config.polar_centre = read_polar_centre(section, domain);

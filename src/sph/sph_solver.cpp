@@ -97,6 +97,7 @@ Parameters make_parameters(const Config& config, const FluidProperties& fluid, c
   // The incompressible scheme's wall rows are not floored, so neither are its loads' wall
   // pressures (docs/sph.md, "Walls").
   p.negative_wall_pressure = config.negative_wall_pressure || config.scheme == "incompressible";
+  p.extrapolated_wall_velocity = config.wall_velocity == "extrapolated";
   return p;
 }
 
@@ -385,7 +386,7 @@ void SphSolver::predict_viscous_explicit(double dt) {
 // that takes more than sph.viscosity_iterations solves, the run says so and goes on. With one
 // solve allowed the viscosities are those of the end of the last step (refresh_incompressible).
 void SphSolver::predict_viscous_implicit(double dt) {
-  viscous_->gather_pairs(fields_, fluid_count_, grid_, gradient_table_, parameters_);
+  viscous_->gather_pairs(fields_, fluid_count_, grid_, kernel_table_, gradient_table_, parameters_);
   for (int iteration = 0; iteration < config_.viscosity_iterations; ++iteration) {
     stop_unless_converged(viscous_->solve(fields_, fluid_count_, parameters_, start_velocity_, dt),
                           "the implicit viscosity solve");
@@ -494,6 +495,8 @@ void SphSolver::save(StateArchive& archive, const std::string& prefix) const {
                       std::vector<double>{max_acceleration_, max_speed_, max_viscosity_});
   archive.put_integers(prefix + "warned_about_speed",
                        std::vector<std::int64_t>{warned_about_speed_ ? 1 : 0});
+  if (poisson_)
+    archive.put_scalar(prefix + "pressure_mean_offset", poisson_->mean_offset());
 }
 
 void SphSolver::restore(const StateArchive& archive, const std::string& prefix) {
@@ -507,6 +510,13 @@ void SphSolver::restore(const StateArchive& archive, const std::string& prefix) 
   max_speed_ = inputs[1];
   max_viscosity_ = inputs[2];
   warned_about_speed_ = archive.integers(prefix + "warned_about_speed").front() != 0;
+  // The incompressible step starts from the grid and wall state of the end of the last one,
+  // which the constructor built for the case's initial particles: rebuilt for the restored ones
+  // (the same values as at the checkpoint, so the resumed run is the uninterrupted one).
+  if (poisson_) {
+    poisson_->set_mean_offset(archive.scalar(prefix + "pressure_mean_offset"));
+    refresh_incompressible();
+  }
 }
 
 std::map<std::string, double> SphSolver::derived_parameters() const {

@@ -3,10 +3,15 @@
 // x_top), and the extrapolation reproduces it exactly at every wall particle, whatever the
 // kernel weights, also when the wall accelerates (a_w) and, with sph.negative_wall_pressure,
 // where the fluid is in tension. Without that key the wall pressure is floored at zero.
+// Ghost velocity (docs/sph.md, "Walls"): in a simple shear flow u = G y over the wall y = 0 the
+// extrapolated form gives the linear profile's value -G d at a wall particle of depth d wherever
+// its ratio d / d_f stays below the cap; Adami's mirror of the fluid's mean does not.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
+#include <vector>
 
 #include "particles/cell_grid.hpp"
 #include "sph/equation_of_state.hpp"
@@ -51,6 +56,20 @@ void fill_tank(Tank& tank) {
   }
 }
 
+// The wall state of the tank's fields (2D, Wendland C2, h = 1.5 dp, Tait); returns the kernel's
+// support radius.
+double update_tank_walls(const Tank& tank, Fields& fields, Parameters parameters) {
+  parameters.dimensions = 2;
+  parameters.reference_density = kDensity;
+  const auto kernel = kernel_registry().create("wendland_c2");
+  const KernelTable table(*kernel, 1.5 * kSpacing, 2);
+  CellGrid grid(tank.domain, table.support_radius());
+  grid.build(fields.position);
+  const auto eos = equation_of_state_registry().create("tait", EosParameters{kDensity, 20.0, 7.0});
+  update_wall_state(fields, tank.fluid_count, grid, table, *eos, parameters);
+  return table.support_radius();
+}
+
 struct Outcome {
   double largest_error = 0.0;  // |p_w - p(y_w)| of the wall particles the fluid reaches [Pa]
   double lowest = 0.0;         // the lowest wall pressure [Pa]
@@ -73,20 +92,13 @@ Outcome wall_pressures(double p_top, double wall_acceleration, bool negative_wal
   for (std::size_t k = tank.fluid_count; k < tank.store.size(); ++k)
     body_acceleration[k] = Vec3(0.0, wall_acceleration, 0.0);
   Parameters parameters;
-  parameters.dimensions = 2;
-  parameters.reference_density = kDensity;
   parameters.gravity = Vec3(0.0, -kGravity, 0.0);
   parameters.negative_wall_pressure = negative_wall_pressure;
-  const auto kernel = kernel_registry().create("wendland_c2");
-  const KernelTable table(*kernel, 1.5 * kSpacing, 2);
-  CellGrid grid(tank.domain, table.support_radius());
-  grid.build(fields.position);
-  const auto eos = equation_of_state_registry().create("tait", EosParameters{kDensity, 20.0, 7.0});
-  update_wall_state(fields, tank.fluid_count, grid, table, *eos, parameters);
+  const double support = update_tank_walls(tank, fields, parameters);
   Outcome outcome;
   outcome.lowest = fields.pressure[tank.fluid_count];
   // Wall particles with fluid inside the kernel support (the deepest row has none).
-  const double reach = table.support_radius() - kSpacing;
+  const double reach = support - kSpacing;
   for (std::size_t k = tank.fluid_count; k < tank.store.size(); ++k) {
     outcome.lowest = std::min(outcome.lowest, fields.pressure[k]);
     if (fields.position[k].y() > -reach)
@@ -117,6 +129,54 @@ TEST(WallState, KeepsTensionOnlyWhenNegativeWallPressureIsAllowed) {
   EXPECT_LT(allowed.lowest, 0.4 * tension);
   const Outcome floored = wall_pressures(tension, 0.0, false);
   EXPECT_EQ(floored.lowest, 0.0);
+}
+
+// The ghost velocities of the wall particles in the shear flow u = (G y, 0, 0), and the depth d of
+// each, by wall row (0: the row next to the fluid).
+struct ShearGhosts {
+  std::vector<std::vector<double>> ghost_over_depth;  // u_ghost / (-G d) by row
+};
+
+ShearGhosts shear_ghosts(bool extrapolated) {
+  constexpr double kShearRate = 3.0;
+  Tank tank;
+  fill_tank(tank);
+  auto& depth = tank.store.add_scalar("surface_depth", "m").values;
+  auto& normal = tank.store.add_vector("surface_normal", "").values;
+  Fields fields(tank.store);
+  for (std::size_t k = 0; k < tank.store.size(); ++k) {
+    fields.density[k] = kDensity;
+    const double y = fields.position[k].y();
+    fields.velocity[k] = k < tank.fluid_count ? Vec3(kShearRate * y, 0.0, 0.0) : Vec3::Zero();
+    depth[k] = std::max(-y, 0.0);
+    normal[k] = Vec3::UnitY();
+  }
+  Parameters parameters;
+  parameters.extrapolated_wall_velocity = extrapolated;
+  update_tank_walls(tank, fields, parameters);
+  ShearGhosts ghosts;
+  ghosts.ghost_over_depth.resize(kWallRows);
+  for (std::size_t k = tank.fluid_count; k < tank.store.size(); ++k) {
+    const int row = static_cast<int>(std::floor(-fields.position[k].y() / kSpacing));
+    ghosts.ghost_over_depth[static_cast<std::size_t>(row)].push_back(fields.wall_velocity[k].x() /
+                                                                     (-kShearRate * depth[k]));
+  }
+  return ghosts;
+}
+
+TEST(WallState, ExtrapolatedGhostVelocityFollowsTheLinearProfile) {
+  // h = 1.5 dp. The row at depth 0.5 dp sees the fluid rows at 0.5 and 1.5 dp: d / d_f is below
+  // the cap of 2 and the ghost is -G d exactly. The row at 1.5 dp sees only the fluid row at
+  // 0.5 dp (d / d_f = 3): capped, -2 G (0.5 dp), 2/3 of -G d.
+  const ShearGhosts extrapolated = shear_ghosts(true);
+  for (double ratio : extrapolated.ghost_over_depth[0])
+    EXPECT_NEAR(ratio, 1.0, 1e-9);
+  for (double ratio : extrapolated.ghost_over_depth[1])
+    EXPECT_NEAR(ratio, 2.0 / 3.0, 1e-9);
+  // Adami's mirror -G d_f gives the first row the fluid's mean distance instead of its depth:
+  // 15% off.
+  const ShearGhosts mirrored = shear_ghosts(false);
+  EXPECT_GT(std::abs(mirrored.ghost_over_depth[0][kColumns / 2] - 1.0), 0.1);
 }
 
 }  // namespace
