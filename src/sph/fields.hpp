@@ -7,16 +7,8 @@
 
 namespace partimix::sph {
 
-inline const std::vector<Vec3>* angular_velocity_of(const ParticleStore& store) {
-  const Field<Vec3>* field = store.find_vector("angular_velocity");
-  return field != nullptr ? &field->values : nullptr;
-}
-
-inline const std::vector<Vec3>* body_acceleration_of(const ParticleStore& store) {
-  const Field<Vec3>* field = store.find_vector("body_acceleration");
-  return field != nullptr ? &field->values : nullptr;
-}
-
+// A field of the store by name, or null when the store has none (bodies, solid walls and surface
+// normals exist only where the particles were generated from a case's walls).
 inline const std::vector<double>* scalars_of(const ParticleStore& store, const std::string& name) {
   const Field<double>* field = store.find_scalar(name);
   return field != nullptr ? &field->values : nullptr;
@@ -47,8 +39,8 @@ struct Fields {
         ghost_weight(store.add_scalar("ghost_weight", "m^d", false).values),
         viscosity(store.add_scalar("viscosity", "Pa s").values),
         shear_rate(store.add_scalar("shear_rate", "1/s").values),
-        angular_velocity(angular_velocity_of(store)),
-        body_acceleration(body_acceleration_of(store)),
+        angular_velocity(vectors_of(store, "angular_velocity")),
+        body_acceleration(vectors_of(store, "body_acceleration")),
         body(integers_of(store, "body")),
         solid(integers_of(store, "solid")),
         surface_depth(scalars_of(store, "surface_depth")),
@@ -62,7 +54,7 @@ struct Fields {
   std::vector<double>& pressure;
   std::vector<double>& density_rate;
   std::vector<Vec3>& acceleration;
-  std::vector<Vec3>& wall_velocity;  // wall particles: the no-slip ghost velocity (Adami 2012)
+  std::vector<Vec3>& wall_velocity;  // wall particles: the no-slip ghost velocity (sph/wall_state)
   // Wall particles: beta_w / sum_f W_wf, so that a fluid particle f's velocity enters the ghost
   // velocity as -ghost_weight W_wf u_f (sph/wall_state.hpp); 0 for walls that see no fluid.
   std::vector<double>& ghost_weight;

@@ -12,8 +12,9 @@
 //   extrapolation of the error at 7.5 mm, plus a margin for the time step's share below).
 //   Measured 2026-11-27: -10.1% and -4.2% (-18.8%, -1.1%, +3.0% at dp = 10, 3.75, 2.5 mm).
 // - The extrapolated ghost velocity (sph.wall_velocity: extrapolated): at dp = 7.5 mm at most
-//   3/4 of the error of Adami's mirror. Measured -5.7% against -10.1% (-12.7%, -1.3%, +1.3%
-//   at dp = 10, 5, 3.75 mm).
+//   3/4 of the error of Adami's mirror, the gain of one refinement from 7.5 to 5 mm above (it
+//   removes the wall's shift of a fraction of a spacing, the first-order part of the error).
+//   Measured -5.7% against -10.1% (-12.7%, -1.3%, +1.3% at dp = 10, 5, 3.75 mm).
 // - Re = 10 (the viscosity 20 times lower): within 7% of the Navier-Stokes torque at
 //   dp = 5 mm. Measured -4.1%. Without the inertia the torque would be the Stokes one less the
 //   spatial error, some 12% below.
