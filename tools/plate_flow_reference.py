@@ -4,7 +4,8 @@ plate in 2D"): the flow between a rectangle of half-length a and half-width b tu
 about its centre and a circle of radius R at rest, by Taylor-Hood (P2-P1) finite elements on a
 mesh of rays from the centre, graded towards the rectangle's corners and towards both walls.
 Stokes flow, or steady Navier-Stokes flow at a given Re = rho N d^2 / mu in the frame turning
-with the rectangle (where it is steady), by Newton's method from the Stokes solution. The torque
+with the rectangle (where it is steady), by Newton's method from the Stokes solution; or the
+seed's CMC power law (Picard iteration on the viscosity), in Stokes flow or at a density. The torque
 per unit depth follows from the dissipation, T omega = int 2 mu eps(u):eps(u) dA, which is the
 power the body gives the fluid. Check: with the rectangle replaced by a circle of radius R1 the
 script reproduces the Couette torque 4 pi mu omega R1^2 R^2 / (R^2 - R1^2), which inertia does
@@ -12,8 +13,10 @@ not change (run with `circle`).
 
     tools/plate_flow_reference.py plate N [RE]   # N rays per quarter turn (20, 40, 80)
     tools/plate_flow_reference.py circle N [RE]
+    tools/plate_flow_reference.py plate N cmc [RHO]   # power law; circle: its Couette torque
 
-Needs numpy and scipy (python3-numpy, python3-scipy); N = 40 takes about 30 s a solve.
+Needs numpy and scipy (python3-numpy, python3-scipy); N = 40 takes about 30 s a solve, and the
+power law 50-70 solves.
 """
 import sys
 
@@ -113,17 +116,33 @@ class Mesh:
         return np.einsum("ka,tab->tkb", dphi, self.jinv)
 
 
+STIFFNESS_POINTS = [(1 / 6, 1 / 6), (2 / 3, 1 / 6), (1 / 6, 2 / 3)]  # exact for degree 2
+
+
+def shear_rates(mesh, u):
+    """sqrt(2 eps:eps) at the stiffness's quadrature points, one column per point."""
+    ul = np.stack([u[2 * mesh.p2], u[2 * mesh.p2 + 1]], -1)
+    rates = []
+    for xi, eta in STIFFNESS_POINTS:
+        grad = np.einsum("tkc,tkb->tcb", ul, mesh.gradients(p2_shape(xi, eta)[2]))
+        eps = 0.5 * (grad + np.transpose(grad, (0, 2, 1)))
+        rates.append(np.sqrt(2.0 * np.einsum("tcb,tcb->t", eps, eps)))
+    return np.stack(rates, -1)
+
+
 def stokes_operators(mesh, mu):
-    """Viscous stiffness 2 mu eps(u):eps(v) and divergence -q div v."""
+    """Viscous stiffness 2 mu eps(u):eps(v) and divergence -q div v; mu a number or one value
+    per triangle and quadrature point."""
+    mu = np.broadcast_to(np.asarray(mu, float), (len(mesh.triangles), 3))
     rows, cols, vals, brows, bcols, bvals = [], [], [], [], [], []
-    for xi, eta in [(1 / 6, 1 / 6), (2 / 3, 1 / 6), (1 / 6, 2 / 3)]:  # exact for degree 2
+    for q, (xi, eta) in enumerate(STIFFNESS_POINTS):
         l, _, dphi = p2_shape(xi, eta)
         g = mesh.gradients(dphi)
         w = (mesh.area / 3.0)[:, None, None]
         for c in range(2):
             for d in range(2):
-                k = mu * ((c == d) * np.einsum("tkb,tlb->tkl", g, g)
-                          + np.einsum("tk,tl->tkl", g[:, :, d], g[:, :, c])) * w
+                k = mu[:, q, None, None] * ((c == d) * np.einsum("tkb,tlb->tkl", g, g)
+                                            + np.einsum("tk,tl->tkl", g[:, :, d], g[:, :, c])) * w
                 rows.append(np.repeat(2 * mesh.p2 + c, 6, 1).ravel())
                 cols.append(np.tile(2 * mesh.p2 + d, 6).ravel())
                 vals.append(k.ravel())
@@ -169,14 +188,14 @@ def inertia(mesh, u, rho):
     return residual, jacobian
 
 
-def torque(points, triangles, inner, outer, mu, rho):
+def torque(points, triangles, inner, outer, viscosity, rho):
     """Steady flow in the body's frame (body at rest, the circle turning at -omega) by Newton's
-    method from the Stokes solution (rho = 0 gives Stokes flow). Returns the torque per unit
-    depth [N m / m] from the dissipation, T omega = int 2 mu eps(u):eps(u) dA (the power the
-    outer wall gives the fluid in this frame, equal to the body's in the lab frame), and the
-    number of Newton steps."""
+    method from the Stokes solution (rho = 0 gives Stokes flow), the viscosity (a function of
+    the shear rate) lagged by one step (Picard) and each step's new one taken as the geometric
+    mean with the last. Returns the torque per unit depth [N m / m] from the dissipation,
+    T omega = int 2 mu eps(u):eps(u) dA (the power the outer wall gives the fluid in this frame,
+    equal to the body's in the lab frame), and the number of steps."""
     mesh = Mesh(points, triangles)
-    stiffness, divergence = stokes_operators(mesh, mu)
     n = 2 * len(mesh.nodes)
     body, wall = mesh.boundary(inner), mesh.boundary(outer)
     u, p = np.zeros(n), np.zeros(mesh.nv)
@@ -186,8 +205,10 @@ def torque(points, triangles, inner, outer, mu, rho):
         fixed[2 * k] = fixed[2 * k + 1] = True
     free = np.nonzero(~fixed)[0]
     keep = np.arange(mesh.nv) != 0  # the pressure is pinned at one vertex
-    div = divergence[keep]
-    for step in range(30):
+    mu = viscosity(np.full((len(mesh.triangles), 3), OMEGA))
+    for step in range(200):
+        stiffness, divergence = stokes_operators(mesh, mu)
+        div = divergence[keep]
         residual, jacobian = inertia(mesh, u, rho) if rho > 0 and step > 0 else (0.0, None)
         operator = stiffness + jacobian if jacobian is not None else stiffness
         r_u = (stiffness @ u + residual + divergence.T @ p)[free]
@@ -196,34 +217,63 @@ def torque(points, triangles, inner, outer, mu, rho):
         delta = spla.spsolve(saddle, -np.concatenate([r_u, div @ u]))
         u[free] += delta[:len(free)]
         p[keep] += delta[len(free):]
-        if rho == 0 or (step > 0 and np.abs(delta[:len(free)]).max() < 1e-10 * OMEGA * R):
+        updated = np.sqrt(mu * viscosity(shear_rates(mesh, u)))
+        change = np.abs(updated / mu - 1.0).max()
+        mu = updated
+        if change < 1e-6 and (rho == 0 or np.abs(delta[:len(free)]).max() < 1e-10 * OMEGA * R):
             break
-    return u @ (stiffness @ u) / OMEGA, step
+    return u @ (stokes_operators(mesh, mu)[0] @ u) / OMEGA, step
+
+
+def newtonian(mu):
+    return lambda rate: np.full_like(rate, mu)
+
+
+def power_law(consistency, index, lowest, highest):
+    """K rate^(n - 1) within [lowest, highest], as partimix's power_law rheology."""
+    return lambda rate: np.clip(consistency * np.maximum(rate, 1e-300)**(index - 1.0), lowest,
+                                highest)
 
 
 def flow_parameters(argv):
     """Viscosity and density: Stokes flow at the test's viscosity, or Re = rho N d^2 / mu with
-    the test's density, N = 1 r/s and d = 2 A."""
+    the test's density, N = 1 r/s and d = 2 A; or the CMC power law (cases/youcefi_vessel_cmc.yaml:
+    K = 13.9 Pa s^n, n = 0.47, 0.1 to 40 Pa s) in Stokes flow or at the density given."""
+    if len(argv) > 3 and argv[3] == "cmc":
+        rho = float(argv[4]) if len(argv) > 4 else 0.0
+        flow = f"CMC power law, rho = {rho:g}" if rho > 0 else "CMC power law, Stokes flow"
+        return power_law(13.9, 0.47, 0.1, 40.0), rho, flow
     if len(argv) < 4:
-        return MU, 0.0, "Stokes flow"
+        return newtonian(MU), 0.0, "Stokes flow"
     reynolds = float(argv[3])
-    return RHO * (OMEGA / (2.0 * np.pi)) * (2.0 * A)**2 / reynolds, RHO, f"Re = {reynolds:g}"
+    mu = RHO * (OMEGA / (2.0 * np.pi)) * (2.0 * A)**2 / reynolds
+    return newtonian(mu), RHO, f"Re = {reynolds:g}"
+
+
+def couette_torque(viscosity):
+    """Torque per unit depth on the circle R1 turning in R: Newtonian 4 pi mu omega R1^2 R^2 /
+    (R^2 - R1^2); power law 2 pi K (2 omega / (n (R1^(-2/n) - R^(-2/n))))^n (docs/power.md),
+    told apart by the viscosity's response to the shear rate."""
+    k_at_1, k_at_2 = viscosity(np.array([1.0, 2.0]))
+    index = 1.0 + np.log2(k_at_2 / k_at_1)
+    return 2.0 * np.pi * k_at_1 * (2.0 * OMEGA / (index * (R1**(-2.0 / index)
+                                                             - R**(-2.0 / index))))**index
 
 
 def main():
     body, n = sys.argv[1], int(sys.argv[2])
-    mu, rho, flow = flow_parameters(sys.argv)
+    viscosity, rho, flow = flow_parameters(sys.argv)
     if body == "plate":
         theta = plate_rays(n)
-        result, steps = torque(*ray_mesh(theta, plate_radius(theta), n), mu, rho)
+        result, steps = torque(*ray_mesh(theta, plate_radius(theta), n), viscosity, rho)
         print(f"plate {2 * A} x {2 * B} m in R = {R} m, {flow}, {n} rays a quarter: "
-              f"{result:.4f} N m/m, {result * MU / mu:.4f} at mu = {MU} ({steps} Newton steps)")
+              f"{result:.4f} N m/m ({steps} steps)")
     else:
         theta = np.linspace(0.0, 2.0 * np.pi, 4 * n, endpoint=False)
-        result, steps = torque(*ray_mesh(theta, np.full_like(theta, R1), n), mu, rho)
-        exact = 4.0 * np.pi * mu * OMEGA * R1**2 * R**2 / (R**2 - R1**2)
+        result, steps = torque(*ray_mesh(theta, np.full_like(theta, R1), n), viscosity, rho)
+        exact = couette_torque(viscosity)
         print(f"circle R1 = {R1} m, {flow}, {n} rays a quarter: {result:.4f} N m/m, "
-              f"exact {exact:.4f} ({result / exact - 1:+.2e}, {steps} Newton steps)")
+              f"exact {exact:.4f} ({result / exact - 1:+.2e}, {steps} steps)")
 
 
 if __name__ == "__main__":

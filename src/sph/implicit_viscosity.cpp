@@ -96,10 +96,10 @@ void ImplicitViscosity::lay_out_matrix(std::size_t fluid_count) {
 // so the ghost velocity's lag cannot feed a particle's own velocity back into itself
 // (docs/sph.md, "Implicit viscosity").
 void ImplicitViscosity::fill_row(std::size_t i, const Fields& f, const Parameters& p,
-                                 const Vec3& start, double dt) {
+                                 const Vec3& start, const Vec3& acceleration, double dt) {
   const double eta_i = f.viscosity[i];
   double diagonal = 1.0;
-  Vec3 rhs = start + dt * p.gravity;
+  Vec3 rhs = start + dt * acceleration;
   double* values = matrix_.valuePtr() + matrix_.outerIndexPtr()[i];
   double* diagonal_value = values;
   for (std::size_t q = row_start_[i]; q < wall_start_[i]; ++q, ++values) {
@@ -125,12 +125,17 @@ void ImplicitViscosity::fill_row(std::size_t i, const Fields& f, const Parameter
 }
 
 LinearSolve ImplicitViscosity::solve(Fields& f, std::size_t fluid_count, const Parameters& p,
-                                     const std::vector<Vec3>& start, double dt) {
+                                     const std::vector<Vec3>& start,
+                                     std::span<const Vec3> explicit_acceleration, double dt) {
   const auto n = static_cast<Eigen::Index>(fluid_count);
   rhs_.resize(n, 3);
 #pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t i = 0; i < static_cast<std::ptrdiff_t>(fluid_count); ++i)
-    fill_row(static_cast<std::size_t>(i), f, p, start[static_cast<std::size_t>(i)], dt);
+  for (std::ptrdiff_t ii = 0; ii < static_cast<std::ptrdiff_t>(fluid_count); ++ii) {
+    const auto i = static_cast<std::size_t>(ii);
+    const Vec3 acceleration =
+        explicit_acceleration.empty() ? p.gravity : Vec3(p.gravity + explicit_acceleration[i]);
+    fill_row(i, f, p, start[i], acceleration, dt);
+  }
   solver_.compute(matrix_);
   LinearSolve result;
   component_.resize(n);

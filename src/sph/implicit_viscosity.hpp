@@ -5,6 +5,7 @@
 // solved by Eigen's conjugate gradient. The pairs and their kernel factors are gathered once per
 // step (gather_pairs); each Picard solve of the step only refills the matrix's values in place.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <Eigen/IterativeLinearSolvers>
@@ -29,10 +30,12 @@ class ImplicitViscosity {
   void gather_pairs(const Fields& fields, std::size_t fluid_count, const CellGrid& grid,
                     const KernelTable& kernel, const KernelTable& gradient_kernel,
                     const Parameters& parameters);
-  // With the fluid's apparent viscosities of now; `start` holds u^n. Writes u* into the fluid
-  // particles' velocities.
+  // With the fluid's apparent viscosities of now; `start` holds u^n, `explicit_acceleration`
+  // (empty or one per fluid particle) what the step adds to g explicitly, the stress form's
+  // div(eta G^T) / rho. Writes u* into the fluid particles' velocities.
   LinearSolve solve(Fields& fields, std::size_t fluid_count, const Parameters& parameters,
-                    const std::vector<Vec3>& start, double dt);
+                    const std::vector<Vec3>& start, std::span<const Vec3> explicit_acceleration,
+                    double dt);
 
  private:
   struct Partner {
@@ -44,7 +47,8 @@ class ImplicitViscosity {
                   const KernelTable& gradient_kernel, const Parameters& p,
                   std::vector<Partner>& out);
   void lay_out_matrix(std::size_t fluid_count);
-  void fill_row(std::size_t i, const Fields& f, const Parameters& p, const Vec3& start, double dt);
+  void fill_row(std::size_t i, const Fields& f, const Parameters& p, const Vec3& start,
+                const Vec3& acceleration, double dt);
 
   using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
   // Row i's fluid partners and diagonal, in column order: partners_[row_start_[i],

@@ -45,19 +45,13 @@ DensityDiffusion diffusion_from(const std::string& name) {
 }
 
 // `auto`: the Morris term for a Newtonian fluid (the same answer as the stress form, at less
-// cost), the stress form where the viscosity varies (docs/sph.md, "Viscous operators").
+// cost), the stress form where the viscosity varies (docs/sph.md, "Viscous operators"); with
+// implicit viscosity the stress form's div(eta G^T) is the explicit part of the step.
 ViscousOperator viscous_operator_from(const Config& config, const FluidProperties& fluid) {
   if (!config.laminar_viscosity)
     return ViscousOperator::none;
-  const bool implicit = config.viscosity_integration == "implicit";
   if (config.viscous_operator == "auto") {
-    return fluid.rheology.model == "newtonian" || implicit ? ViscousOperator::morris
-                                                           : ViscousOperator::stress;
-  }
-  if (config.viscous_operator == "stress" && implicit) {
-    throw InputError(InputLocation{"", 0, 0, "sph.viscous_operator"},
-                     "implicit viscosity (sph.viscosity_integration) makes the Morris operator "
-                     "implicit; use viscous_operator morris or auto");
+    return fluid.rheology.model == "newtonian" ? ViscousOperator::morris : ViscousOperator::stress;
   }
   if (config.viscous_operator == "morris")
     return ViscousOperator::morris;
@@ -385,11 +379,18 @@ void SphSolver::predict_viscous_explicit(double dt) {
 // viscosity of a non-Newtonian fluid until no particle's changes by more than 1%; the first time
 // that takes more than sph.viscosity_iterations solves, the run says so and goes on. With one
 // solve allowed the viscosities are those of the end of the last step (refresh_incompressible).
+// The stress form's div(eta G^T) is explicit, from the stresses of the last iterate.
 void SphSolver::predict_viscous_implicit(double dt) {
   viscous_->gather_pairs(fields_, fluid_count_, grid_, kernel_table_, gradient_table_, parameters_);
+  const bool stress = parameters_.viscous_operator == ViscousOperator::stress;
   for (int iteration = 0; iteration < config_.viscosity_iterations; ++iteration) {
-    stop_unless_converged(viscous_->solve(fields_, fluid_count_, parameters_, start_velocity_, dt),
-                          "the implicit viscosity solve");
+    if (stress)
+      compute_stress_divergence(fields_, fluid_count_, grid_, gradient_table_, stress_rates_);
+    stop_unless_converged(
+        viscous_->solve(fields_, fluid_count_, parameters_, start_velocity_,
+                        stress ? std::span<const Vec3>(stress_rates_) : std::span<const Vec3>(),
+                        dt),
+        "the implicit viscosity solve");
     if (newtonian_ || config_.viscosity_iterations == 1 || !update_apparent_viscosity())
       return;
   }
@@ -403,20 +404,16 @@ void SphSolver::predict_viscous_implicit(double dt) {
   }
 }
 
-// Apparent viscosities from the shear rates of the current velocities; true when one changed by
-// more than 1%.
+// Apparent viscosities (and, stress form, stresses) from the current velocities; true when one
+// changed by more than 1%.
 bool SphSolver::update_apparent_viscosity() {
-  compute_shear_rates(fields_, fluid_count_, grid_, gradient_table_, domain_.dimensions,
-                      config_.corrected_velocity_gradient);
+  previous_viscosity_.assign(fields_.viscosity.begin(),
+                             fields_.viscosity.begin() + static_cast<std::ptrdiff_t>(fluid_count_));
+  update_viscosity();
   bool changed = false;
-  double largest = 0.0;
-  for (std::size_t i = 0; i < fluid_count_; ++i) {
-    const double updated = rheology_.viscosity(fields_.shear_rate[i]);
-    changed = changed || std::abs(updated - fields_.viscosity[i]) > 0.01 * fields_.viscosity[i];
-    fields_.viscosity[i] = updated;
-    largest = std::max(largest, updated);
-  }
-  max_viscosity_ = largest;
+  for (std::size_t i = 0; i < fluid_count_; ++i)
+    changed = changed || std::abs(fields_.viscosity[i] - previous_viscosity_[i]) >
+                             0.01 * previous_viscosity_[i];
   return changed;
 }
 

@@ -103,6 +103,8 @@ class SphSolver final : public Solver {
   std::vector<Vec3> start_velocity_;
   std::vector<double> start_density_;
   std::vector<double> scratch_;
+  std::vector<double> previous_viscosity_;  // of the last Picard iterate
+  std::vector<Vec3> stress_rates_;  // div(eta G^T) / rho, the semi-implicit step's explicit part
   ShiftingScratch shifting_;
   // The incompressible scheme's pressure solve; absent for the weakly-compressible one.
   std::optional<PressurePoisson> poisson_;

@@ -59,4 +59,28 @@ double compute_viscous_stress(Fields& f, std::size_t fluid_count, const CellGrid
   return largest;
 }
 
+void compute_stress_divergence(const Fields& f, std::size_t fluid_count, const CellGrid& grid,
+                               const KernelTable& gradient_kernel,
+                               std::vector<Vec3>& acceleration) {
+  acceleration.resize(std::max(acceleration.size(), fluid_count));
+  const auto n = static_cast<std::ptrdiff_t>(fluid_count);
+#pragma omp parallel for schedule(dynamic, 512)
+  for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
+    const auto i = static_cast<std::size_t>(ii);
+    const double inverse_density_i = 1.0 / f.density[i];
+    const Mat3 tau_i = f.viscous_stress[i] * (inverse_density_i * inverse_density_i);
+    Vec3 sum = Vec3::Zero();
+    grid.for_each_neighbour(i, f.position, [&](std::size_t j, const Vec3& r_ij, double r2) {
+      if (j == i)
+        return;
+      const double r = std::sqrt(r2);
+      const double inverse_density_j = 1.0 / f.density[j];
+      const Vec3 grad = (gradient_kernel.derivative(r) / r) * r_ij;
+      sum += f.mass[j] *
+             ((tau_i + f.viscous_stress[j] * (inverse_density_j * inverse_density_j)) * grad);
+    });
+    acceleration[i] = sum;
+  }
+}
+
 }  // namespace partimix::sph

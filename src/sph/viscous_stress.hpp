@@ -6,6 +6,7 @@
 // velocity gradient (sph/velocity_gradient.hpp). Wall particles take the kernel-weighted mean of
 // their fluid neighbours' T.
 #include <cstddef>
+#include <vector>
 
 #include "materials/rheology.hpp"
 #include "particles/cell_grid.hpp"
@@ -21,5 +22,12 @@ double compute_viscous_stress(Fields& fields, std::size_t fluid_count, const Cel
                               const KernelTable& gradient_kernel, const KernelTable& kernel,
                               const materials::BoundedRheology& rheology, int dimensions,
                               bool corrected);
+
+// The acceleration div(eta_a G^T) / rho of each fluid particle from the held stresses T,
+// sum_j m_j (T_i / rho_i^2 + T_j / rho_j^2) grad_i W_ij over fluid and wall neighbours, as the
+// stress form's pair term: the explicit part of the semi-implicit viscous step (docs/sph.md,
+// "Implicit viscosity"). Writes `acceleration[0, fluid_count)`.
+void compute_stress_divergence(const Fields& fields, std::size_t fluid_count, const CellGrid& grid,
+                               const KernelTable& gradient_kernel, std::vector<Vec3>& acceleration);
 
 }  // namespace partimix::sph

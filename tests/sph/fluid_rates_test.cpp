@@ -3,7 +3,8 @@
 // equations"), written out here pair by pair, on a disordered block of fluid over two wall
 // layers with random velocities, pressures, densities, viscosities and viscous stresses: with
 // each viscous operator, artificial viscosity and Fourtakas diffusion, on one and two threads
-// (within 1e-12 of the largest rate: round-off).
+// (within 1e-12 of the largest rate: round-off). The stress form's term alone is also the
+// explicit part of the semi-implicit viscous step.
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -11,8 +12,10 @@
 #include <cmath>
 #include <random>
 
+#include "particles/cell_grid.hpp"
 #include "sph/fluid_rates.hpp"
 #include "sph/kernel.hpp"
+#include "sph/viscous_stress.hpp"
 
 namespace partimix::sph {
 namespace {
@@ -153,6 +156,33 @@ TEST(FluidRates, MorrisEqualsTheDirectSumOnTwoThreads) {
 }
 TEST(FluidRates, StressFormEqualsTheDirectSumOnTwoThreads) {
   expect_reference(ViscousOperator::stress, 2);
+}
+
+// The explicit part of the semi-implicit viscous step (docs/sph.md, "Implicit viscosity") is the
+// stress form's pair term alone: the direct sum with every other term switched off.
+TEST(FluidRates, StressDivergenceIsTheStressFormsPairTerm) {
+  Block block(ViscousOperator::stress);
+  block.p.gravity = Vec3::Zero();
+  block.p.artificial_viscosity = 0.0;
+  std::fill(block.fields.pressure.begin(), block.fields.pressure.end(), 0.0);
+  std::fill(block.fields.viscosity.begin(), block.fields.viscosity.end(), 0.0);
+  const auto kernel = kernel_registry().create("wendland_c2");
+  const KernelTable table(*kernel, block.p.h, 3);
+  std::vector<Vec3> expected(block.fluid_count);
+  std::vector<double> density_rate(block.fluid_count);
+  block.reference(table, expected, density_rate);
+  CellGrid grid(block.domain, table.support_radius());
+  grid.build(block.fields.position);
+  std::vector<Vec3> divergence;
+  omp_set_num_threads(2);
+  compute_stress_divergence(block.fields, block.fluid_count, grid, table, divergence);
+  omp_set_num_threads(1);
+  double largest = 0.0;
+  for (const Vec3& a : expected)
+    largest = std::max(largest, a.norm());
+  ASSERT_GT(largest, 0.0);
+  for (std::size_t i = 0; i < block.fluid_count; ++i)
+    EXPECT_LT((divergence[i] - expected[i]).norm(), 1e-12 * largest) << i;
 }
 
 }  // namespace
