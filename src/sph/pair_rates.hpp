@@ -60,6 +60,14 @@ inline double artificial_viscosity(double approach, double r2, double rho_i, dou
          ((r2 + p.eta2) * 0.5 * (rho_i + rho_j));
 }
 
+// The stress form's pair term per unit mass of neighbour j, (T_i / rho_i^2 + T_j / rho_j^2)
+// grad_i W_ij with T = eta_a G^T (docs/sph.md, "Viscous operators").
+[[gnu::always_inline]] inline Vec3 stress_pair_term(const Mat3& tau_over_rho2_i, std::size_t j,
+                                                    double inverse_density_j, const Vec3& grad,
+                                                    const Fields& f) {
+  return (tau_over_rho2_i + f.viscous_stress[j] * (inverse_density_j * inverse_density_j)) * grad;
+}
+
 // The acceleration of fluid particle i per unit mass of neighbour j (docs/sph.md): pressure,
 // Morris viscosity with the pair viscosity eta_sum and the velocity difference v_viscous (a
 // wall's ghost velocity for a wall), stress form, artificial viscosity. grad = F r_ij.
@@ -78,10 +86,8 @@ inline double artificial_viscosity(double approach, double r2, double rho_i, dou
         (i.inverse_density * inverse_density_j * eta_sum * gradient_factor * r2 / (r2 + p.eta2)) *
         v_viscous;
   }
-  if (p.viscous_operator == ViscousOperator::stress) {
-    acceleration +=
-        (i.tau_over_rho2 + f.viscous_stress[j] * (inverse_density_j * inverse_density_j)) * grad;
-  }
+  if (p.viscous_operator == ViscousOperator::stress)
+    acceleration += stress_pair_term(i.tau_over_rho2, j, inverse_density_j, grad, f);
   if (p.artificial_viscosity > 0.0)
     acceleration -=
         artificial_viscosity(v_viscous.dot(r_ij), r2, i.density, f.density[j], p) * grad;

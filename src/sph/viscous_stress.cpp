@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sph/pair_rates.hpp"
 #include "sph/velocity_gradient.hpp"
 
 namespace partimix::sph {
@@ -74,10 +75,8 @@ void compute_stress_divergence(const Fields& f, std::size_t fluid_count, const C
       if (j == i)
         return;
       const double r = std::sqrt(r2);
-      const double inverse_density_j = 1.0 / f.density[j];
       const Vec3 grad = (gradient_kernel.derivative(r) / r) * r_ij;
-      sum += f.mass[j] *
-             ((tau_i + f.viscous_stress[j] * (inverse_density_j * inverse_density_j)) * grad);
+      sum += f.mass[j] * stress_pair_term(tau_i, j, 1.0 / f.density[j], grad, f);
     });
     acceleration[i] = sum;
   }

@@ -22,9 +22,11 @@
 //   40 Pa s, rho = 1000 kg/m^3, Metzner-Otto Re about 4.7): within 7% of the finite-element
 //   torque 1.831 N m/m at dp = 7.5 mm (the same script with the power law by Picard iteration:
 //   1.8409 and 1.8186 with 20 and 40 rays in Stokes flow, extrapolated as the Newtonian torque,
-//   times 1.0153 for inertia on 20 rays). Measured -5.6% (-5.4%, -5.3%, -5.5% at dp = 5, 3.75,
-//   2.5 mm: the error does not fall with the spacing, docs/power.md); with the Morris operator
-//   alone, implicit viscosity's form until 2026-11-28, +11.3%.
+//   times 1.0153 for inertia on 20 rays). The bound: the error at a small step, -3.5% and flat
+//   in the spacing, plus the step's share at flow_cfl 0.1, 2 points, plus 1.5 points for the
+//   torque's fluctuation over the averaging window. Measured -5.6% (-5.4%, -5.3%, -5.5% at
+//   dp = 5, 3.75, 2.5 mm: the error does not fall with the spacing, docs/power.md); with the
+//   Morris operator alone, implicit viscosity's form until 2026-11-28, +11.3%.
 // Known weakness, not asserted: at Re = 0.5 the torque depends on the step, the projection's
 // slip at the walls, which grows as nu dt (docs/sph.md, "Incompressible SPH"): with the
 // extrapolated ghost velocity -6.9%, -4.5%, -3.2% at dp = 7.5, 5, 3.75 mm and flow_cfl 0.025
