@@ -36,18 +36,29 @@ std::vector<std::string> first_steps(const io::Case& the_case) {
   return {end, "dem.fill.settle_time=0.01"};
 }
 
-TEST(ShippedCases, EveryCaseFileRunsItsFirstSteps) {
-  const std::vector<std::string> files = shipped_cases();
-  ASSERT_GE(files.size(), 10U);
-  for (const std::string& file : files) {
-    SCOPED_TRACE(file);
-    const io::Case the_case = io::load_case(file, first_steps(io::load_case(file)));
-    const test_support::CaseRun run = test_support::run_case(the_case);
-    EXPECT_EQ(run.summary.status, "completed");
-    EXPECT_GT(run.summary.steps, 0U);
-    for (const auto& [name, value] : run.figures)
-      EXPECT_TRUE(std::isfinite(value)) << name;
-  }
+// One test per case file, so that ctest runs them side by side.
+class ShippedCases : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ShippedCases, RunsItsFirstSteps) {
+  const std::string& file = GetParam();
+  const io::Case the_case = io::load_case(file, first_steps(io::load_case(file)));
+  const test_support::CaseRun run = test_support::run_case(the_case);
+  EXPECT_EQ(run.summary.status, "completed");
+  EXPECT_GT(run.summary.steps, 0U);
+  for (const auto& [name, value] : run.figures)
+    EXPECT_TRUE(std::isfinite(value)) << name;
+}
+
+// The test is named after the case file's stem (letters, digits and underscores in cases/).
+std::string case_name(const ::testing::TestParamInfo<std::string>& info) {
+  return std::filesystem::path(info.param).stem().string();
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryCaseFile, ShippedCases, ::testing::ValuesIn(shipped_cases()),
+                         case_name);
+
+TEST(ShippedCasesFolder, HoldsTheCases) {
+  EXPECT_GE(shipped_cases().size(), 10U);
 }
 
 }  // namespace
