@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
+#include <utility>
 
 namespace partimix {
 
@@ -78,17 +80,51 @@ int aggregate(const Matrix& a, std::vector<int>& of) {
   return count;
 }
 
-// P^T A P with P_iI = 1 when unknown i is in aggregate I.
+// P^T A P with P_iI = 1 when unknown i is in aggregate I: row I sums the rows of its members,
+// column j going to of[j]. Built row by row (the members listed by a counting sort, each row's
+// columns found through `slot`, then sorted), without a global sort of triplets.
 Matrix galerkin(const Matrix& a, const std::vector<int>& of, int count) {
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(static_cast<std::size_t>(a.nonZeros()));
-  for (Index i = 0; i < a.rows(); ++i) {
-    const int row = of[static_cast<std::size_t>(i)];
-    for (Matrix::InnerIterator it(a, i); it; ++it)
-      entries.emplace_back(row, of[static_cast<std::size_t>(it.col())], it.value());
+  const auto coarse_count = static_cast<std::size_t>(count);
+  std::vector<int> first(coarse_count + 1, 0);
+  for (const int aggregate : of)
+    ++first[static_cast<std::size_t>(aggregate) + 1];
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  std::vector<int> members(of.size());
+  std::vector<int> next(first.begin(), first.end() - 1);
+  for (std::size_t i = 0; i < of.size(); ++i)
+    members[static_cast<std::size_t>(next[static_cast<std::size_t>(of[i])]++)] =
+        static_cast<int>(i);
+
+  std::vector<int> outer(coarse_count + 1, 0);
+  std::vector<std::pair<int, double>> entries;
+  entries.reserve(static_cast<std::size_t>(a.nonZeros()) / 2);
+  std::vector<std::ptrdiff_t> slot(coarse_count, -1);
+  for (std::size_t row = 0; row < coarse_count; ++row) {
+    const auto row_start = static_cast<std::ptrdiff_t>(entries.size());
+    for (int m = first[row]; m < first[row + 1]; ++m) {
+      for (Matrix::InnerIterator it(a, members[static_cast<std::size_t>(m)]); it; ++it) {
+        const auto column = static_cast<std::size_t>(of[static_cast<std::size_t>(it.col())]);
+        if (slot[column] < row_start) {
+          slot[column] = static_cast<std::ptrdiff_t>(entries.size());
+          entries.emplace_back(static_cast<int>(column), it.value());
+        } else {
+          entries[static_cast<std::size_t>(slot[column])].second += it.value();
+        }
+      }
+    }
+    std::sort(entries.begin() + row_start, entries.end());
+    outer[row + 1] = static_cast<int>(entries.size());
   }
   Matrix coarse(count, count);
-  coarse.setFromTriplets(entries.begin(), entries.end());
+  coarse.reserve(static_cast<Index>(entries.size()));
+  for (std::size_t row = 0; row < coarse_count; ++row) {
+    coarse.startVec(static_cast<Index>(row));
+    for (int e = outer[row]; e < outer[row + 1]; ++e) {
+      const auto& [column, value] = entries[static_cast<std::size_t>(e)];
+      coarse.insertBack(static_cast<Index>(row), column) = value;
+    }
+  }
+  coarse.finalize();
   return coarse;
 }
 

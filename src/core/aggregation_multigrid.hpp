@@ -44,6 +44,8 @@ class AggregationMultigrid {
   std::size_t levels() const { return levels_.size(); }
   // Unknowns of level l (0 the finest).
   Eigen::Index size(std::size_t level) const { return levels_[level].a.rows(); }
+  // The operator of level l.
+  const Matrix& matrix(std::size_t level) const { return levels_[level].a; }
 
  private:
   struct Level {

@@ -78,6 +78,21 @@ TEST(AggregationMultigrid, BuildsLevelsThatShrinkToTheDirectSolve) {
   EXPECT_LE(multigrid.size(multigrid.levels() - 1), 500);
 }
 
+// The Galerkin product P^T A P with a piecewise-constant P keeps the sum of all entries
+// (1^T P^T A P 1 = 1^T A 1, since P 1 = 1) and the symmetry of A on every level. The Laplacian
+// with p = 0 on the faces has its entries' sum in its boundary rows: 6 n^2 here.
+TEST(AggregationMultigrid, CoarseOperatorsKeepTheSumAndSymmetryOfTheMatrix) {
+  AggregationMultigrid multigrid;
+  multigrid.compute(laplacian(24));
+  ASSERT_GE(multigrid.levels(), 3U);
+  for (std::size_t l = 0; l < multigrid.levels(); ++l) {
+    const Matrix& a = multigrid.matrix(l);
+    EXPECT_NEAR(a.sum(), 6.0 * 24 * 24, 1e-9 * 6.0 * 24 * 24) << "level " << l;
+    const Matrix asymmetry = a - Matrix(a.transpose());
+    EXPECT_LE(asymmetry.cwiseAbs().sum(), 1e-12 * a.cwiseAbs().sum()) << "level " << l;
+  }
+}
+
 // A diagonal matrix has no couplings to aggregate: the levels stop at once, above the size
 // solved directly, and Jacobi sweeps stand in for the direct solve.
 TEST(AggregationMultigrid, FallsBackToJacobiWhenNothingCoarsens) {
