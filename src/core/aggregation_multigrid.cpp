@@ -81,8 +81,8 @@ int aggregate(const Matrix& a, std::vector<int>& of) {
 }
 
 // P^T A P with P_iI = 1 when unknown i is in aggregate I: row I sums the rows of its members,
-// column j going to of[j]. Built row by row (the members listed by a counting sort, each row's
-// columns found through `slot`, then sorted), without a global sort of triplets.
+// column j going to of[j]. Built row by row (the members listed by a counting sort, a row's
+// columns gathered through `slot` and sorted), without a global sort of triplets.
 Matrix galerkin(const Matrix& a, const std::vector<int>& of, int count) {
   const auto coarse_count = static_cast<std::size_t>(count);
   std::vector<int> first(coarse_count + 1, 0);
@@ -95,34 +95,28 @@ Matrix galerkin(const Matrix& a, const std::vector<int>& of, int count) {
     members[static_cast<std::size_t>(next[static_cast<std::size_t>(of[i])]++)] =
         static_cast<int>(i);
 
-  std::vector<int> outer(coarse_count + 1, 0);
-  std::vector<std::pair<int, double>> entries;
-  entries.reserve(static_cast<std::size_t>(a.nonZeros()) / 2);
-  std::vector<std::ptrdiff_t> slot(coarse_count, -1);
+  Matrix coarse(count, count);
+  std::vector<int> slot_row(coarse_count, -1);  // the row whose entry `slot` points at
+  std::vector<std::size_t> slot(coarse_count);
+  std::vector<std::pair<Index, double>> row_entries;
   for (std::size_t row = 0; row < coarse_count; ++row) {
-    const auto row_start = static_cast<std::ptrdiff_t>(entries.size());
+    row_entries.clear();
     for (int m = first[row]; m < first[row + 1]; ++m) {
       for (Matrix::InnerIterator it(a, members[static_cast<std::size_t>(m)]); it; ++it) {
         const auto column = static_cast<std::size_t>(of[static_cast<std::size_t>(it.col())]);
-        if (slot[column] < row_start) {
-          slot[column] = static_cast<std::ptrdiff_t>(entries.size());
-          entries.emplace_back(static_cast<int>(column), it.value());
+        if (slot_row[column] != static_cast<int>(row)) {
+          slot_row[column] = static_cast<int>(row);
+          slot[column] = row_entries.size();
+          row_entries.emplace_back(static_cast<Index>(column), it.value());
         } else {
-          entries[static_cast<std::size_t>(slot[column])].second += it.value();
+          row_entries[slot[column]].second += it.value();
         }
       }
     }
-    std::sort(entries.begin() + row_start, entries.end());
-    outer[row + 1] = static_cast<int>(entries.size());
-  }
-  Matrix coarse(count, count);
-  coarse.reserve(static_cast<Index>(entries.size()));
-  for (std::size_t row = 0; row < coarse_count; ++row) {
+    std::sort(row_entries.begin(), row_entries.end());
     coarse.startVec(static_cast<Index>(row));
-    for (int e = outer[row]; e < outer[row + 1]; ++e) {
-      const auto& [column, value] = entries[static_cast<std::size_t>(e)];
+    for (const auto& [column, value] : row_entries)
       coarse.insertBack(static_cast<Index>(row), column) = value;
-    }
   }
   coarse.finalize();
   return coarse;

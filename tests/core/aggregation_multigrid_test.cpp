@@ -80,7 +80,8 @@ TEST(AggregationMultigrid, BuildsLevelsThatShrinkToTheDirectSolve) {
 
 // The Galerkin product P^T A P with a piecewise-constant P keeps the sum of all entries
 // (1^T P^T A P 1 = 1^T A 1, since P 1 = 1) and the symmetry of A on every level. The Laplacian
-// with p = 0 on the faces has its entries' sum in its boundary rows: 6 n^2 here.
+// with p = 0 on the faces has its entries' sum in its boundary rows: 6 n^2 here. Both hold to
+// round-off of the sums (bounds 1e-9 and 1e-12 relative, some 1e3 times double's epsilon).
 TEST(AggregationMultigrid, CoarseOperatorsKeepTheSumAndSymmetryOfTheMatrix) {
   AggregationMultigrid multigrid;
   multigrid.compute(laplacian(24));
