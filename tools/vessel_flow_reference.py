@@ -8,7 +8,10 @@ Re = rho N d^2 / mu (d the plate's length) with the Coriolis term, by Newton's m
 Stokes solution (the centrifugal term is a gradient and goes into the pressure). The torque
 follows from the dissipation, T omega = int 2 mu eps(u):eps(u) dV: the Coriolis force does no
 work and exerts no torque about the axis on a flow without normal flux through the walls, so
-the plate's torque equals the walls' in either frame. Printed: the torque and Np Re =
+the plate's torque equals the walls' in either frame. (At Re = 10 the Navier-Stokes
+solve did not finish in 20 minutes on the 6 mm mesh: GMRES converged slowly, probably because
+the block preconditioner leaves out the Coriolis term. No Navier-Stokes figure of this tool is
+in docs/ yet.) Printed: the torque and Np Re =
 P / (mu N^2 d^3). Check (`sphere`): a sphere of radius 0.075 m turning inside one of 0.15 m,
 whose torque is 8 pi mu omega R1^3 R2^3 / (R2^3 - R1^3).
 
