@@ -3,26 +3,31 @@
 a finite-element reference"): a flat plate turning about the axis of a closed cylindrical
 vessel, by Taylor-Hood (P2-P1) finite elements on a tetrahedral mesh graded towards the plate.
 The flow is solved in the frame turning with the plate, where it is steady: the plate at rest,
-the vessel's walls turning at -omega; Stokes flow, or steady Navier-Stokes flow at
-Re = rho N d^2 / mu (d the plate's length) with the Coriolis term, by Newton's method from the
-Stokes solution (the centrifugal term is a gradient and goes into the pressure). The torque
-follows from the dissipation, T omega = int 2 mu eps(u):eps(u) dV: the Coriolis force does no
-work and exerts no torque about the axis on a flow without normal flux through the walls, so
-the plate's torque equals the walls' in either frame. (At Re = 10 the Navier-Stokes
-solve did not finish in 20 minutes on the 6 mm mesh: GMRES converged slowly, probably because
-the block preconditioner leaves out the Coriolis term. No Navier-Stokes figure of this tool is
-in docs/ yet.) Printed: the torque and Np Re =
-P / (mu N^2 d^3). Check (`sphere`): a sphere of radius 0.075 m turning inside one of 0.15 m,
-whose torque is 8 pi mu omega R1^3 R2^3 / (R2^3 - R1^3).
+the vessel's walls turning at -omega. Stokes flow (Newtonian or the seed's CMC power law, the
+latter by Newton's method after three Picard steps), or steady Navier-Stokes flow at
+Re = rho N d^2 / mu (d the plate's length) with the Coriolis term (the centrifugal term is a
+gradient and goes into the pressure). The torque follows from the dissipation,
+T omega = int 2 mu eps(u):eps(u) dV: the Coriolis force does no work and exerts no torque about
+the axis on a flow without normal flux through the walls, so the plate's torque equals the
+walls' in either frame. Printed: the torque, Np Re = P / (mu N^2 d^3) for a Newtonian fluid,
+and for the CMC the Newtonian viscosity of the same torque and the Metzner-Otto constant k it
+implies (seed eq. 27). Check (`sphere`): a sphere of radius 0.075 m turning inside one of
+0.15 m, whose torque is 8 pi mu omega R1^3 R2^3 / (R2^3 - R1^3). The power-law path has no
+closed-form check in 3D; its k for the 8 mm plate (8.44) meets the 2D section's 8.46.
 
     tools/vessel_flow_reference.py plate THICKNESS HMIN [RE] [--top lid|slip] [--plate-top Z]
+    tools/vessel_flow_reference.py plate THICKNESS HMIN --cmc [--rpm RPM] [--rho RHO] [...]
     tools/vessel_flow_reference.py sphere HMIN
 
 THICKNESS and HMIN (the element size at the plate's edges) in metres. The vessel and plate are
 the test's (tests/validation/stirred_vessel_test.cpp): radius 0.15 m, lid at 0.3 m, plate
 0.15 m long from z = 0.014 to 0.294 m; `--top slip` makes the top a free-slip plane (a flat
-free surface) and `--plate-top` moves the plate's top edge. Needs FEniCS 2019 (python3-dolfin)
-and gmsh (python3-gmsh, python3-meshio): scripts/install-reference-tools.sh.
+free surface) and `--plate-top` moves the plate's top edge. The speed defaults to 1 rad/s (Np Re
+and k do not depend on it in Newtonian Stokes flow; the CMC's k does, through the viscosity
+bounds, so docs/ use `--rpm 60`). A Newtonian Re > 0 did not finish in 20 minutes at Re = 10
+on the 6 mm mesh (GMRES converged slowly, probably because the block preconditioner leaves out
+the Coriolis term); no Navier-Stokes figure of this tool is in docs/. Needs FEniCS 2019
+(python3-dolfin) and gmsh (python3-gmsh, python3-meshio): scripts/install-reference-tools.sh.
 """
 import argparse
 import math
@@ -41,6 +46,10 @@ A = 0.075  # the plate's half-length
 Z0 = 0.014  # the plate's clearance above the floor
 MU = 1.0  # the Newtonian viscosity (Pa s); Np Re does not depend on it
 D = 2.0 * A
+
+# Quadrature of degree 4: exact for the Newtonian terms of P2-P1, and enough for the power
+# law's viscosity, which would otherwise ask for hundreds of points a cell.
+DX = df.dx(metadata={"quadrature_degree": 4})
 
 
 def plate_mesh(thickness, z1, hmin, path):
@@ -184,11 +193,6 @@ def solve(mesh, on_body, top_slip, fluid):
     if fluid.rho > 0 or fluid.power_law:
         newton(space, w, bcs, fluid)
     return stokes, dissipation(w, fluid.viscosity(df.split(w)[0])), space.dim()
-
-
-# Quadrature of degree 4: exact for the Newtonian terms of P2-P1, and enough for the power
-# law's viscosity, which would otherwise ask for hundreds of points a cell.
-DX = df.dx(metadata={"quadrature_degree": 4})
 
 
 def stokes_form(u, p, v, q, mu):
