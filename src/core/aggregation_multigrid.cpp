@@ -24,6 +24,9 @@ constexpr Index kLargestDirectSize = 20000;
 constexpr int kStalledSweeps = 10;
 constexpr double kJacobiWeight = 0.9;
 constexpr double kOverCorrection = 1.8;
+// The finest operator's off-diagonal entries below this fraction of their row's largest are
+// lumped onto the diagonal for the V-cycle (BiCGSTAB keeps the whole matrix).
+constexpr double kLumpedFraction = 0.3;
 
 // j is strongly coupled to i when -a_ij is at least kStrength of the row's largest -a_ik.
 template <class Fn>
@@ -136,7 +139,40 @@ void residual(const Matrix& a, const Vector& x, const Vector& b, Vector& r) {
 
 }  // namespace
 
+AggregationMultigrid::Matrix lump_weak_couplings(const AggregationMultigrid::Matrix& a,
+                                                 double fraction) {
+  Matrix kept(a.rows(), a.cols());
+  kept.reserve(a.nonZeros());
+  std::vector<std::pair<Index, double>> row_entries;
+  for (Index i = 0; i < a.rows(); ++i) {
+    double largest = 0.0;
+    for (Matrix::InnerIterator it(a, i); it; ++it) {
+      if (it.col() != i)
+        largest = std::max(largest, std::abs(it.value()));
+    }
+    row_entries.clear();
+    double lumped = 0.0;
+    for (Matrix::InnerIterator it(a, i); it; ++it) {
+      if (it.col() != i && std::abs(it.value()) < fraction * largest)
+        lumped += it.value();
+      else
+        row_entries.emplace_back(it.col(), it.value());
+    }
+    if (lumped != 0.0 && std::none_of(row_entries.begin(), row_entries.end(),
+                                      [i](const auto& entry) { return entry.first == i; })) {
+      row_entries.emplace_back(i, 0.0);
+      std::sort(row_entries.begin(), row_entries.end());
+    }
+    kept.startVec(i);
+    for (const auto& [column, value] : row_entries)
+      kept.insertBack(i, column) = column == i ? value + lumped : value;
+  }
+  kept.finalize();
+  return kept;
+}
+
 void AggregationMultigrid::setup(Matrix a) {
+  a = lump_weak_couplings(a, kLumpedFraction);
   levels_.clear();
   coarsest_.reset();
   info_ = Eigen::Success;

@@ -64,4 +64,10 @@ class AggregationMultigrid {
   Eigen::ComputationInfo info_ = Eigen::Success;
 };
 
+// `a` with each row's off-diagonal entries smaller in magnitude than `fraction` of the row's
+// largest added to its diagonal: the row sums, and with them the constant vector a Laplacian
+// leaves (nearly) unchanged, stay as they were, with far fewer entries for a wide stencil.
+AggregationMultigrid::Matrix lump_weak_couplings(const AggregationMultigrid::Matrix& a,
+                                                 double fraction);
+
 }  // namespace partimix

@@ -6,6 +6,8 @@
 // Measured (2026-11-27): 16^3 12 iterations (Jacobi 39), 32^3 15 (Jacobi 75).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <Eigen/IterativeLinearSolvers>
 
 #include "core/aggregation_multigrid.hpp"
@@ -47,8 +49,9 @@ int iterations_to_solve(const Matrix& a, const Eigen::VectorXd& b, Eigen::Vector
   return static_cast<int>(solver.iterations());
 }
 
-int multigrid_iterations(int n) {
-  const Matrix a = laplacian(n);
+// Solves a x = b with the multigrid and with Jacobi: the multigrid's answer must be conjugate
+// gradient's, in under a third of Jacobi's iterations.
+int multigrid_iterations(const Matrix& a, const char* label) {
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(a.rows(), -1.0, 2.0);
   Eigen::VectorXd x;
   const int multigrid = iterations_to_solve<AggregationMultigrid>(a, b, x);
@@ -57,15 +60,15 @@ int multigrid_iterations(int n) {
   Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper> reference;
   reference.setTolerance(1e-13);
   const Eigen::VectorXd exact = reference.compute(a).solve(b);
-  std::printf("%d^3: multigrid %d iterations, Jacobi %d\n", n, multigrid, jacobi);
+  std::printf("%s: multigrid %d iterations, Jacobi %d\n", label, multigrid, jacobi);
   EXPECT_LT((x - exact).lpNorm<Eigen::Infinity>(), 1e-6 * exact.lpNorm<Eigen::Infinity>());
   EXPECT_LT(3 * multigrid, jacobi);
   return multigrid;
 }
 
 TEST(AggregationMultigrid, SolvesThePoissonEquationInIterationsThatHardlyGrowWithTheGrid) {
-  const int coarse = multigrid_iterations(16);
-  const int fine = multigrid_iterations(32);
+  const int coarse = multigrid_iterations(laplacian(16), "16^3");
+  const int fine = multigrid_iterations(laplacian(32), "32^3");
   EXPECT_LE(fine, coarse + coarse / 2);
 }
 
@@ -108,6 +111,67 @@ TEST(AggregationMultigrid, FallsBackToJacobiWhenNothingCoarsens) {
   Eigen::VectorXd x;
   iterations_to_solve<AggregationMultigrid>(a, b, x);
   EXPECT_LT((a * x - b).norm(), 1e-8 * b.norm());
+}
+
+// The SPH pressure matrix's stencil: every lattice neighbour within 3 spacings (the support
+// 2h at h = 1.5 dp), weighted as the Wendland C2 kernel's -W'(r)/r, (1 - r/3)^3, with p = 0
+// beyond the cube's faces (each row's diagonal the whole sum of its weights). 92 neighbours a
+// row inside.
+Matrix wide_stencil_laplacian(int n) {
+  std::vector<Eigen::Triplet<double>> entries;
+  auto index = [n](int i, int j, int k) { return (k * n + j) * n + i; };
+  for (int k = 0; k < n; ++k) {
+    for (int j = 0; j < n; ++j) {
+      for (int i = 0; i < n; ++i) {
+        double diagonal = 0.0;
+        for (int dk = -3; dk <= 3; ++dk) {
+          for (int dj = -3; dj <= 3; ++dj) {
+            for (int di = -3; di <= 3; ++di) {
+              const double r = std::sqrt(di * di + dj * dj + dk * dk);
+              if (r == 0.0 || r >= 3.0)
+                continue;
+              const double weight = std::pow(1.0 - r / 3.0, 3);
+              diagonal += weight;
+              const int ii = i + di;
+              const int jj = j + dj;
+              const int kk = k + dk;
+              if (ii >= 0 && ii < n && jj >= 0 && jj < n && kk >= 0 && kk < n)
+                entries.emplace_back(index(i, j, k), index(ii, jj, kk), -weight);
+            }
+          }
+        }
+        entries.emplace_back(index(i, j, k), index(i, j, k), diagonal);
+      }
+    }
+  }
+  Matrix a(n * n * n, n * n * n);
+  a.setFromTriplets(entries.begin(), entries.end());
+  return a;
+}
+
+// Lumping keeps each row's sum to round-off, keeps exactly the entries at or above the fraction
+// of the row's largest off-diagonal one (here 18 of the 92 neighbours inside: those within
+// sqrt(2) spacings, since (1 - sqrt(3)/3)^3 is 0.255 of (1 - 1/3)^3), and leaves the rest off.
+TEST(AggregationMultigrid, LumpingWeakCouplingsKeepsTheRowSums) {
+  const Matrix a = wide_stencil_laplacian(10);
+  const Matrix lumped = lump_weak_couplings(a, 0.3);
+  const Eigen::VectorXd ones = Eigen::VectorXd::Ones(a.cols());
+  const Eigen::VectorXd sums = a * ones;
+  const Eigen::VectorXd lumped_sums = lumped * ones;
+  EXPECT_LE((sums - lumped_sums).lpNorm<Eigen::Infinity>(), 1e-12 * a.diagonal().maxCoeff());
+  const auto inner = static_cast<Eigen::Index>((5 * 10 + 5) * 10 + 5);
+  EXPECT_EQ(a.row(inner).nonZeros(), 93);
+  EXPECT_EQ(lumped.row(inner).nonZeros(), 19);
+  const double kept_weights =
+      6.0 * std::pow(1.0 - 1.0 / 3.0, 3) + 12.0 * std::pow(1.0 - std::sqrt(2.0) / 3.0, 3);
+  EXPECT_NEAR(lumped.coeff(inner, inner), kept_weights, 1e-12);
+}
+
+// The multigrid (which lumps the finest operator's weak couplings) solves the wide stencil's
+// equation as conjugate gradient does, in under a third of Jacobi's iterations (measured
+// 2026-11-28: 6 against 25).
+TEST(AggregationMultigrid, SolvesTheWideStencilOfTheSphLaplacian) {
+  multigrid_iterations(wide_stencil_laplacian(20), "wide stencil 20^3");
 }
 
 }  // namespace
