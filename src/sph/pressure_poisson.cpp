@@ -2,6 +2,7 @@
 
 #include "sph/particle_shifting.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 
@@ -38,8 +39,8 @@ PressurePoisson::PressurePoisson(double tolerance, int max_iterations) {
 // A_ij = -2 V_j (r_ij . grad_i W_ij) / (r_ij^2 + eta^2) >= 0, or p_i = 0 at a free surface.
 bool PressurePoisson::add_fluid_row(std::size_t i, const Fields& f, const CellGrid& grid,
                                     const KernelTable& kernel, const Parameters& p, double dt,
-                                    Entries& entries) {
-  const std::size_t first = entries.size();
+                                    ThreadRows& rows) {
+  const std::size_t first = rows.entries.size();
   double diagonal = 0.0;
   double divergence = 0.0;
   double position_divergence = 0.0;
@@ -51,20 +52,22 @@ bool PressurePoisson::add_fluid_row(std::size_t i, const Fields& f, const CellGr
     const double volume = f.mass[j] / p.reference_density;
     const double r_dot_grad = r_ij.dot(grad);
     const double a_ij = -2.0 * volume * r_dot_grad / (r2 + p.eta2);
-    entries.emplace_back(static_cast<int>(i), static_cast<int>(j), -a_ij);
+    rows.entries.emplace_back(static_cast<int>(j), -a_ij);
     diagonal += a_ij;
     divergence -= volume * relative_velocity(i, j, f, p, dt).dot(grad);
     position_divergence -= volume * r_dot_grad;
   });
   const auto row = static_cast<int>(i);
   if (at_free_surface(position_divergence, p.dimensions)) {
-    entries.resize(first);
-    entries.emplace_back(row, row, 1.0);
+    rows.entries.resize(first);
+    rows.entries.emplace_back(row, 1.0);
     rhs_[row] = 0.0;
+    rows.close_row(row, first);
     return true;
   }
-  entries.emplace_back(row, row, diagonal);
+  rows.entries.emplace_back(row, diagonal);
   rhs_[row] = -p.reference_density * divergence / dt;
+  rows.close_row(row, first);
   return false;
 }
 
@@ -72,8 +75,8 @@ bool PressurePoisson::add_fluid_row(std::size_t i, const Fields& f, const CellGr
 // without fluid around (Adami et al. 2012, eq. 27 with rho_f = rho0).
 void PressurePoisson::add_wall_row(std::size_t w, const Fields& f, std::size_t fluid_count,
                                    const CellGrid& grid, const KernelTable& kernel,
-                                   const Parameters& p, Entries& entries) {
-  const std::size_t first = entries.size();
+                                   const Parameters& p, ThreadRows& rows) {
+  const std::size_t first = rows.entries.size();
   double weight = 0.0;
   Vec3 moment = Vec3::Zero();
   grid.for_each_neighbour(
@@ -82,36 +85,56 @@ void PressurePoisson::add_wall_row(std::size_t w, const Fields& f, std::size_t f
         const double W = kernel.value(std::sqrt(r2));
         weight += W;
         moment += W * r_wj;
-        entries.emplace_back(static_cast<int>(w), static_cast<int>(j), -W);
+        rows.entries.emplace_back(static_cast<int>(j), -W);
       },
       fluid_count);
   const auto row = static_cast<int>(w);
   if (weight <= 0.0) {
-    entries.resize(first);
-    entries.emplace_back(row, row, 1.0);
+    rows.entries.resize(first);
+    rows.entries.emplace_back(row, 1.0);
     rhs_[row] = 0.0;
+    rows.close_row(row, first);
     return;
   }
-  for (std::size_t k = first; k < entries.size(); ++k)
-    entries[k] = Eigen::Triplet<double>(row, entries[k].col(), entries[k].value() / weight);
-  entries.emplace_back(row, row, 1.0);
+  for (std::size_t k = first; k < rows.entries.size(); ++k)
+    rows.entries[k].second /= weight;
+  rows.entries.emplace_back(row, 1.0);
   Vec3 relative_gravity = p.gravity;
   if (f.body_acceleration != nullptr)
     relative_gravity -= (*f.body_acceleration)[w];
   rhs_[row] = p.reference_density * relative_gravity.dot(moment) / weight;
+  rows.close_row(row, first);
 }
 
-// Rows in parallel, each thread into its own list, then gathered in one.
+// A finished row's entries sorted by column, as a compressed sparse row must hold them, those of
+// one column (two periodic images of a particle in a short periodic domain) summed.
+void PressurePoisson::ThreadRows::close_row(int row, std::size_t first) {
+  const auto begin = entries.begin() + static_cast<std::ptrdiff_t>(first);
+  std::sort(begin, entries.end());
+  auto last = begin;
+  for (auto it = begin; it != entries.end(); ++it) {
+    if (it != begin && it->first == last->first)
+      last->second += it->second;
+    else
+      *(it == begin ? last : ++last) = *it;
+  }
+  entries.erase(begin == entries.end() ? begin : last + 1, entries.end());
+  starts.emplace_back(row, first);
+}
+
+// Rows in parallel, each thread into its own buffers; then the compressed rows are laid out
+// from the rows' lengths and filled in parallel, without a list of triplets to sort.
 void PressurePoisson::assemble(const Fields& f, std::size_t fluid_count, const CellGrid& grid,
                                const KernelTable& kernel, const KernelTable& gradient_kernel,
                                const Parameters& p, double dt) {
   const std::size_t n = f.position.size();
-  thread_entries_.resize(static_cast<std::size_t>(omp_get_max_threads()));
+  thread_rows_.resize(static_cast<std::size_t>(omp_get_max_threads()));
   bool dirichlet = false;
 #pragma omp parallel reduction(|| : dirichlet)
   {
-    Entries& local = thread_entries_[static_cast<std::size_t>(omp_get_thread_num())];
-    local.clear();
+    ThreadRows& local = thread_rows_[static_cast<std::size_t>(omp_get_thread_num())];
+    local.entries.clear();
+    local.starts.clear();
 #pragma omp for schedule(dynamic, 256)
     for (std::ptrdiff_t ii = 0; ii < static_cast<std::ptrdiff_t>(n); ++ii) {
       const auto i = static_cast<std::size_t>(ii);
@@ -122,20 +145,44 @@ void PressurePoisson::assemble(const Fields& f, std::size_t fluid_count, const C
     }
   }
   has_dirichlet_row_ = dirichlet;
-  entries_.clear();
-  for (const Entries& local : thread_entries_)
-    entries_.insert(entries_.end(), local.begin(), local.end());
+  lay_out_matrix(n, fluid_count);
 }
 
-// Without a free surface the pressure is fixed only up to a constant and the discrete source is
-// not exactly compatible with the walls' rows: each fluid row's diagonal grows by the fraction
-// kRegularisation, a uniform slight compressibility that takes up the incompatibility evenly
-// (a constant pressure, taken off after the solve) instead of at one pinned particle (docs/sph.md,
-// "Incompressible SPH").
-void PressurePoisson::regularise_fluid_rows(std::size_t fluid_count) {
-  for (Eigen::Triplet<double>& e : entries_) {
-    if (e.row() == e.col() && static_cast<std::size_t>(e.row()) < fluid_count)
-      e = Eigen::Triplet<double>(e.row(), e.col(), e.value() * (1.0 + kRegularisation));
+// Row lengths, their prefix sums as the outer index, then each thread copies its rows; without
+// a free surface each fluid row's diagonal grows by the fraction kRegularisation, a uniform
+// slight compressibility that takes up the incompatibility of the discrete source with the
+// walls' rows evenly (a constant pressure, taken off after the solve) instead of at one pinned
+// particle (docs/sph.md, "Incompressible SPH").
+void PressurePoisson::lay_out_matrix(std::size_t n, std::size_t fluid_count) {
+  matrix_.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+  int* outer = matrix_.outerIndexPtr();
+  outer[0] = 0;
+  for (const ThreadRows& local : thread_rows_) {
+    for (std::size_t k = 0; k < local.starts.size(); ++k) {
+      const std::size_t end =
+          k + 1 < local.starts.size() ? local.starts[k + 1].second : local.entries.size();
+      outer[local.starts[k].first + 1] = static_cast<int>(end - local.starts[k].second);
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    outer[i + 1] += outer[i];
+  matrix_.resizeNonZeros(outer[n]);
+  const double regularisation = has_dirichlet_row_ ? 1.0 : 1.0 + kRegularisation;
+#pragma omp parallel
+  {
+    const ThreadRows& local = thread_rows_[static_cast<std::size_t>(omp_get_thread_num())];
+    for (std::size_t k = 0; k < local.starts.size(); ++k) {
+      const int row = local.starts[k].first;
+      const std::size_t end =
+          k + 1 < local.starts.size() ? local.starts[k + 1].second : local.entries.size();
+      int slot = outer[row];
+      for (std::size_t e = local.starts[k].second; e < end; ++e, ++slot) {
+        const auto [column, value] = local.entries[e];
+        matrix_.innerIndexPtr()[slot] = column;
+        const bool scaled = column == row && static_cast<std::size_t>(row) < fluid_count;
+        matrix_.valuePtr()[slot] = scaled ? value * regularisation : value;
+      }
+    }
   }
 }
 
@@ -145,10 +192,6 @@ LinearSolve PressurePoisson::solve(Fields& f, std::size_t fluid_count, const Cel
   const std::size_t n = f.position.size();
   rhs_.resize(static_cast<Eigen::Index>(n));
   assemble(f, fluid_count, grid, kernel, gradient_kernel, p, dt);
-  if (!has_dirichlet_row_)
-    regularise_fluid_rows(fluid_count);
-  matrix_.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
-  matrix_.setFromTriplets(entries_.begin(), entries_.end());
   solver_.compute(matrix_);
   if (solution_.size() != rhs_.size())
     solution_.setZero(rhs_.size());

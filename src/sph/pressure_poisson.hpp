@@ -3,6 +3,7 @@
 // "Incompressible SPH": one row per particle (fluid: the Laplacian of p / rho0 equals the
 // divergence of the predicted velocity over dt; fluid at a free surface: p = 0; wall: Adami's
 // extrapolation from the fluid), solved by Eigen's BiCGSTAB, and the projection of the velocity.
+#include <utility>
 #include <vector>
 
 #include <Eigen/IterativeLinearSolvers>
@@ -35,24 +36,29 @@ class PressurePoisson {
   void set_mean_offset(double offset) { mean_offset_ = offset; }
 
  private:
-  using Entries = std::vector<Eigen::Triplet<double>>;
+  // The rows one thread assembled: their (column, value) entries one row after the other, each
+  // row's sorted by column, and where each row starts.
+  struct ThreadRows {
+    std::vector<std::pair<int, double>> entries;
+    std::vector<std::pair<int, std::size_t>> starts;  // (row, its first entry)
+    void close_row(int row, std::size_t first);
+  };
   // add_fluid_row returns true for a Dirichlet row (p = 0 at a free surface).
   bool add_fluid_row(std::size_t i, const Fields& f, const CellGrid& grid,
-                     const KernelTable& kernel, const Parameters& p, double dt, Entries& entries);
+                     const KernelTable& kernel, const Parameters& p, double dt, ThreadRows& rows);
   void add_wall_row(std::size_t w, const Fields& f, std::size_t fluid_count, const CellGrid& grid,
-                    const KernelTable& kernel, const Parameters& p, Entries& entries);
-  void regularise_fluid_rows(std::size_t fluid_count);
+                    const KernelTable& kernel, const Parameters& p, ThreadRows& rows);
   void assemble(const Fields& f, std::size_t fluid_count, const CellGrid& grid,
                 const KernelTable& kernel, const KernelTable& gradient_kernel, const Parameters& p,
                 double dt);
+  void lay_out_matrix(std::size_t n, std::size_t fluid_count);
 
   // Relative growth of a fluid row's diagonal without a free surface (docs/sph.md): below 1% of
   // the lowest mode of the discrete Laplacian, (pi dp / L)^2 of the diagonal, up to L = 300
   // spacings across.
   static constexpr double kRegularisation = 1e-6;
   using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
-  std::vector<Entries> thread_entries_;  // the rows each thread assembled
-  Entries entries_;
+  std::vector<ThreadRows> thread_rows_;
   Eigen::VectorXd rhs_;
   Eigen::VectorXd solution_;
   Matrix matrix_;
