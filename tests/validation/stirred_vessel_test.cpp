@@ -116,7 +116,7 @@ TEST(StirredVessel, PowerNumberFallsAsOneOverReynoldsInLaminarFlow) {
 // 236.8 at dp = 10 mm (-22.6%) and 265.5 at 7.5 mm (-13.2%); 296.9 at 5 mm (-3.0%, not run
 // here: 51 minutes). Asserted: at dp = 7.5 mm within 17% of the reference, and the error at most
 // 3/4 of that at dp = 10 mm, which first-order convergence would give (measured 0.59). About
-// 5.5 minutes on one core.
+// 4.2 minutes on one core (5.5 before the multigrid lumped its finest operator's weak couplings).
 TEST(StirredVessel, IncompressibleTorqueConvergesToTheFiniteElementOne) {
   constexpr double kReference = 306.0;
   const std::vector<std::string> incompressible{
