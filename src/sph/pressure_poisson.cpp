@@ -111,14 +111,14 @@ void PressurePoisson::add_wall_row(std::size_t w, const Fields& f, std::size_t f
 void PressurePoisson::ThreadRows::close_row(int row, std::size_t first) {
   const auto begin = entries.begin() + static_cast<std::ptrdiff_t>(first);
   std::sort(begin, entries.end());
-  auto last = begin;
-  for (auto it = begin; it != entries.end(); ++it) {
-    if (it != begin && it->first == last->first)
-      last->second += it->second;
+  auto kept = begin;  // every row has its diagonal entry
+  for (auto it = begin + 1; it != entries.end(); ++it) {
+    if (it->first == kept->first)
+      kept->second += it->second;
     else
-      *(it == begin ? last : ++last) = *it;
+      *++kept = *it;
   }
-  entries.erase(begin == entries.end() ? begin : last + 1, entries.end());
+  entries.erase(kept + 1, entries.end());
   starts.emplace_back(row, first);
 }
 
@@ -129,12 +129,14 @@ void PressurePoisson::assemble(const Fields& f, std::size_t fluid_count, const C
                                const Parameters& p, double dt) {
   const std::size_t n = f.position.size();
   thread_rows_.resize(static_cast<std::size_t>(omp_get_max_threads()));
+  for (ThreadRows& local : thread_rows_) {
+    local.entries.clear();
+    local.starts.clear();
+  }
   bool dirichlet = false;
 #pragma omp parallel reduction(|| : dirichlet)
   {
     ThreadRows& local = thread_rows_[static_cast<std::size_t>(omp_get_thread_num())];
-    local.entries.clear();
-    local.starts.clear();
 #pragma omp for schedule(dynamic, 256)
     for (std::ptrdiff_t ii = 0; ii < static_cast<std::ptrdiff_t>(n); ++ii) {
       const auto i = static_cast<std::size_t>(ii);
@@ -168,9 +170,10 @@ void PressurePoisson::lay_out_matrix(std::size_t n, std::size_t fluid_count) {
     outer[i + 1] += outer[i];
   matrix_.resizeNonZeros(outer[n]);
   const double regularisation = has_dirichlet_row_ ? 1.0 : 1.0 + kRegularisation;
-#pragma omp parallel
-  {
-    const ThreadRows& local = thread_rows_[static_cast<std::size_t>(omp_get_thread_num())];
+  const auto lists = static_cast<std::ptrdiff_t>(thread_rows_.size());
+#pragma omp parallel for schedule(static, 1)
+  for (std::ptrdiff_t t = 0; t < lists; ++t) {
+    const ThreadRows& local = thread_rows_[static_cast<std::size_t>(t)];
     for (std::size_t k = 0; k < local.starts.size(); ++k) {
       const int row = local.starts[k].first;
       const std::size_t end =
