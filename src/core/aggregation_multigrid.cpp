@@ -28,6 +28,11 @@ constexpr double kOverCorrection = 1.8;
 // lumped onto the diagonal for the V-cycle (BiCGSTAB keeps the whole matrix).
 constexpr double kLumpedFraction = 0.3;
 
+// 1 / d, and 0 where d = 0: the Jacobi sweeps leave an unknown without a diagonal unchanged.
+Vector safe_inverse(const Vector& diagonal) {
+  return diagonal.unaryExpr([](double d) { return d != 0.0 ? 1.0 / d : 0.0; });
+}
+
 // j is strongly coupled to i when -a_ij is at least kStrength of the row's largest -a_ik.
 template <class Fn>
 void for_each_strong(const Matrix& a, Index i, Fn&& fn) {
@@ -175,13 +180,12 @@ void AggregationMultigrid::setup(Matrix a) {
   a = lump_weak_couplings(a, kLumpedFraction);
   levels_.clear();
   coarsest_.reset();
-  info_ = Eigen::Success;
   while (true) {
     Level& level = levels_.emplace_back();
     level.a = std::move(a);
     level.a.makeCompressed();
     const Index n = level.a.rows();
-    level.inverse_diagonal = level.a.diagonal().cwiseInverse();
+    level.inverse_diagonal = safe_inverse(level.a.diagonal());
     level.x.resize(n);
     level.b.resize(n);
     level.r.resize(n);
@@ -196,11 +200,14 @@ void AggregationMultigrid::setup(Matrix a) {
     return;
   coarsest_ = std::make_unique<Eigen::SparseLU<Eigen::SparseMatrix<double>>>();
   coarsest_->compute(Eigen::SparseMatrix<double>(levels_.back().a));
-  info_ = coarsest_->info();
+  // A failed factorisation must not be solved with (Eigen reads past its arrays): the sweeps
+  // stand in, and BiCGSTAB judges whether the system itself can be solved.
+  if (coarsest_->info() != Eigen::Success)
+    coarsest_.reset();
 }
 
 // The coarsest level directly, or, when the aggregation stalled above kLargestDirectSize
-// unknowns (a matrix without strong couplings), by Jacobi sweeps.
+// unknowns (a matrix without strong couplings) or the factorisation failed, by Jacobi sweeps.
 void AggregationMultigrid::solve_coarsest(const Level& l) const {
   if (coarsest_) {
     l.x = coarsest_->solve(l.b);

@@ -6,9 +6,9 @@
 // product P^T A P with the piecewise-constant prolongation P, and one V-cycle with damped Jacobi
 // smoothing and an over-corrected coarse step (Braess 1995) is the preconditioner's action; the
 // coarsest level is solved by Eigen's SparseLU (by Jacobi sweeps if the aggregation stalls
-// while it is still large). Eigen has no multigrid and Debian's hypre needs
-// MPI, which partimix does not use yet; the setup is linear in the matrix's nonzeros, cheap
-// enough to redo at every step of a particle method, where the matrix changes each step.
+// while it is still large, or if the factorisation fails). Eigen has no multigrid and Debian's
+// hypre needs MPI, which partimix does not use yet; the setup is linear in the matrix's nonzeros,
+// cheap enough to redo at every step of a particle method, where the matrix changes each step.
 #include <memory>
 #include <vector>
 
@@ -39,9 +39,13 @@ class AggregationMultigrid {
     return *this;
   }
   Vector solve(const Vector& b) const;
-  Eigen::ComputationInfo info() const { return info_; }
+  // Always Success: a level that cannot be factored falls back to Jacobi sweeps.
+  Eigen::ComputationInfo info() const { return Eigen::Success; }
 
   std::size_t levels() const { return levels_.size(); }
+  // True when the coarsest level is solved by the direct factorisation (false when it was too
+  // large or could not be factored, and Jacobi sweeps stand in).
+  bool direct_coarsest() const { return coarsest_ != nullptr; }
   // Unknowns of level l (0 the finest).
   Eigen::Index size(std::size_t level) const { return levels_[level].a.rows(); }
   // The operator of level l.
@@ -61,7 +65,6 @@ class AggregationMultigrid {
 
   std::vector<Level> levels_;
   std::unique_ptr<Eigen::SparseLU<Eigen::SparseMatrix<double>>> coarsest_;
-  Eigen::ComputationInfo info_ = Eigen::Success;
 };
 
 // `a` with each row's off-diagonal entries smaller in magnitude than `fraction` of the row's

@@ -113,6 +113,40 @@ TEST(AggregationMultigrid, FallsBackToJacobiWhenNothingCoarsens) {
   EXPECT_LT((a * x - b).norm(), 1e-8 * b.norm());
 }
 
+// A matrix the direct solve cannot factor (here a 1D Laplacian with one unknown that has no
+// entry at all, as a pressure row of an isolated particle in a closed vessel might have) must
+// not be used: the coarsest level falls back to Jacobi sweeps, whose zero diagonal passes
+// nothing, and BiCGSTAB solves the consistent system. Before this fallback the solve read the
+// failed factorisation and the run stopped with a segmentation fault (issue 18: the vessel at
+// dp = 5 mm, Re = 10).
+TEST(AggregationMultigrid, FallsBackToJacobiWhenTheDirectSolveFails) {
+  const int n = 40;
+  const int isolated = 17;
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int i = 0; i < n; ++i) {
+    if (i == isolated)
+      continue;
+    entries.emplace_back(i, i, 2.0);
+    for (const int j : {i - 1, i + 1}) {
+      if (j >= 0 && j < n && j != isolated)
+        entries.emplace_back(i, j, -1.0);
+    }
+  }
+  Matrix a(n, n);
+  a.setFromTriplets(entries.begin(), entries.end());
+  Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0);
+  b[isolated] = 0.0;
+  AggregationMultigrid multigrid;
+  multigrid.compute(a);
+  EXPECT_FALSE(multigrid.direct_coarsest());
+  EXPECT_TRUE(multigrid.solve(b).allFinite());
+  Eigen::BiCGSTAB<Matrix, AggregationMultigrid> solver;
+  solver.setTolerance(1e-10);
+  const Eigen::VectorXd x = solver.compute(a).solve(b);
+  EXPECT_EQ(solver.info(), Eigen::Success);
+  EXPECT_LT((a * x - b).norm(), 1e-8 * b.norm());
+}
+
 // The SPH pressure matrix's stencil: every lattice neighbour within 3 spacings (the support
 // 2h at h = 1.5 dp), weighted as the Wendland C2 kernel's -W'(r)/r, (1 - r/3)^3, with p = 0
 // beyond the cube's faces (each row's diagonal the whole sum of its weights). 92 neighbours a
