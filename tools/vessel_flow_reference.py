@@ -24,9 +24,11 @@ the test's (tests/validation/stirred_vessel_test.cpp): radius 0.15 m, lid at 0.3
 0.15 m long from z = 0.014 to 0.294 m; `--top slip` makes the top a free-slip plane (a flat
 free surface) and `--plate-top` moves the plate's top edge. The speed defaults to 1 rad/s (Np Re
 and k do not depend on it in Newtonian Stokes flow; the CMC's k does, through the viscosity
-bounds, so docs/ use `--rpm 60`). A Newtonian Re > 0 did not finish in 20 minutes at Re = 10
-on the 6 mm mesh (GMRES converged slowly, probably because the block preconditioner leaves out
-the Coriolis term); no Navier-Stokes figure of this tool is in docs/. Needs FEniCS 2019
+bounds, so docs/ use `--rpm 60`). With inertia (RE > 0) each Newton step is a direct solve
+(MUMPS): GMRES with the Stokes block preconditioner, which leaves out convection and the Coriolis
+term, had not converged in 20 minutes at Re = 10. The direct solve is the cost: at Re = 10 on
+the 12 mm mesh (161,000 unknowns) four Newton steps took 52 minutes and 6 GB on one core; the
+Newtonian run also prints the Stokes flow's Np Re on the same mesh. Needs FEniCS 2019
 (python3-dolfin) and gmsh (python3-gmsh, python3-meshio): scripts/install-reference-tools.sh.
 """
 import argparse
@@ -232,13 +234,22 @@ def newton(space, w, bcs, fluid):
     for k in range(40):
         form = picard if fluid.power_law and k < 3 else jacobian
         a, b = df.assemble_system(form, -residual, homogeneous)
-        pre, _ = df.assemble_system(block_form(trial_u, trial_p, v, q, mu), -residual, homogeneous)
-        # Inexact Newton: the residual is exact, so a loose inner tolerance changes the number
-        # of steps, not the answer. Without inertia the Jacobian is symmetric (the power law's
-        # dissipation is a convex potential), and MINRES serves.
-        solver = krylov("gmres" if fluid.rho > 0 else "minres", 1e-5)
-        solver.set_operators(a, pre)
-        iterations = solver.solve(step.vector(), b)
+        if fluid.rho > 0:
+            # With inertia the Jacobian is not symmetric and the block preconditioner, which
+            # leaves out convection and the Coriolis term, let GMRES stall: a direct solve.
+            solver = df.PETScLUSolver("mumps")
+            solver.set_operator(a)
+            solver.solve(step.vector(), b)
+            iterations = 1
+        else:
+            # Inexact Newton: the residual is exact, so a loose inner tolerance changes the
+            # number of steps, not the answer. Without inertia the Jacobian is symmetric (the
+            # power law's dissipation is a convex potential), and MINRES serves.
+            pre, _ = df.assemble_system(block_form(trial_u, trial_p, v, q, mu), -residual,
+                                        homogeneous)
+            solver = krylov("minres", 1e-5)
+            solver.set_operators(a, pre)
+            iterations = solver.solve(step.vector(), b)
         w.vector().axpy(1.0, step.vector())
         size = step.split(deepcopy=True)[0].vector().norm("linf")
         print(f"  Newton {k}: {iterations} Krylov iterations, velocity step {size:.3e}", flush=True)
@@ -282,7 +293,8 @@ def main():
     head = (f"plate thickness {thickness} top {args.top} plate_top {z1} hmin {hmin} "
             f"cells {mesh.num_cells()} unknowns {dofs} torque {power / omega:.6e}")
     if not args.cmc:
-        print(f"{head} Re {re} NpRe {power / (MU * n * n * D**3):.3f}")
+        scale = MU * n * n * D**3
+        print(f"{head} Re {re} NpRe {power / scale:.3f} NpRe_stokes {stokes / scale:.3f}")
         return
     # The Newtonian viscosity of the same torque, and the Metzner-Otto constant it implies:
     # K (k N)^(n-1) = mu_eff (seed eq. 27).
