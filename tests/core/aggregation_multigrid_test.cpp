@@ -114,11 +114,11 @@ TEST(AggregationMultigrid, FallsBackToJacobiWhenNothingCoarsens) {
 }
 
 // A matrix the direct solve cannot factor (here a 1D Laplacian with one unknown that has no
-// entry at all, as a pressure row of an isolated particle in a closed vessel might have) must
-// not be used: the coarsest level falls back to Jacobi sweeps, whose zero diagonal passes
-// nothing, and BiCGSTAB solves the consistent system. Before this fallback the solve read the
-// failed factorisation and the run stopped with a segmentation fault (issue 18: the vessel at
-// dp = 5 mm, Re = 10).
+// entry at all; what made the vessel's coarsest level unfactorable is not known, since the
+// SPH pressure rows always hold their diagonal) must not be used: the coarsest level falls back to
+// Jacobi sweeps, whose zero diagonal passes nothing, and BiCGSTAB solves the consistent system.
+// Before this fallback the solve read the failed factorisation and the run stopped with a
+// segmentation fault (issue 18: the vessel at dp = 5 mm, Re = 10).
 TEST(AggregationMultigrid, FallsBackToJacobiWhenTheDirectSolveFails) {
   const int n = 40;
   const int isolated = 17;
