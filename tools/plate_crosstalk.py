@@ -65,6 +65,8 @@ def measure(arrays, body, h):
     fluid_sides = np.sign(local[is_fluid, 2])
     tree = cKDTree(fluid)
     beside = is_fluid & inside & (np.abs(local[:, 2]) < 2.0 * h)
+    if not beside.any():
+        raise ValueError("no fluid within 2h of the body's mid-plane away from its edges")
     fluid_share = far_side_shares(x[beside], np.sign(local[beside, 2]), tree, fluid,
                                   fluid_sides, h)
     plate = on_body & inside
