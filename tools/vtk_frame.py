@@ -9,7 +9,8 @@ TYPES = {"Float64": np.float64, "Int32": np.int32, "Int64": np.int64}
 
 def read_frame(path):
     """The point arrays of a frame by name (Points included), as numpy arrays of rows."""
-    data = open(path, "rb").read()
+    with open(path, "rb") as frame:
+        data = frame.read()
     start = data.find(b"<AppendedData")
     if start < 0 or b'header_type="UInt64"' not in data[:start]:
         raise ValueError(f"{path}: not a frame with raw appended data and UInt64 headers")
