@@ -19,35 +19,13 @@ sys.path.insert(0, TOOLS)
 
 from plate_crosstalk import measure  # noqa: E402
 from vtk_frame import read_frame  # noqa: E402
+from frame_writer import write_frame  # noqa: E402
 
 SPACING = 0.01
 # h/dp = 1.3, not partimix's 1.5: the tool keeps the particles more than 2h inside the plate's
 # extent, and with 2h = 3 dp that edge would pass through lattice points (ties of round-off).
 H = 1.3 * SPACING
 FLUID, BODY = 0, 2  # partimix's kinds of particle; the tool only needs fluid = 0
-
-
-def write_frame(path, points, kind, body):
-    """A frame in partimix's layout: VTK PolyData, raw appended data, UInt64 size headers."""
-    arrays = [("kind", "Int32", np.asarray(kind, np.int32)),
-              ("body", "Int32", np.asarray(body, np.int32)),
-              ("Points", "Float64", np.asarray(points, np.float64))]
-    headers, blobs, offset = [], [], 0
-    for name, kind_name, values in arrays:
-        components = 1 if values.ndim == 1 else values.shape[1]
-        headers.append(f'<DataArray type="{kind_name}" Name="{name}" '
-                       f'NumberOfComponents="{components}" format="appended" offset="{offset}"/>')
-        blob = np.uint64(values.nbytes).tobytes() + values.tobytes()
-        blobs.append(blob)
-        offset += len(blob)
-    count = len(points)
-    text = ('<?xml version="1.0"?>\n<VTKFile type="PolyData" version="1.0" '
-            'byte_order="LittleEndian" header_type="UInt64">\n<PolyData>\n'
-            f'<Piece NumberOfPoints="{count}">\n<PointData>\n{headers[0]}\n{headers[1]}\n'
-            f'</PointData>\n<Points>\n{headers[2]}\n</Points>\n</Piece>\n</PolyData>\n'
-            '<AppendedData encoding="raw">\n_')
-    with open(path, "wb") as out:
-        out.write(text.encode() + b"".join(blobs) + b"\n</AppendedData>\n</VTKFile>\n")
 
 
 def plate_and_fluid(gap):
