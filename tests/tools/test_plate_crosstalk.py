@@ -1,8 +1,7 @@
-"""Tests of tools/plate_crosstalk.py and tools/vtk_frame.py (run by ctest, label tools).
+"""Tests of tools/plate_crosstalk.py (run by ctest, label tools).
 
 The plate tool's shares are checked against their definition evaluated by a direct double loop
-on a synthetic frame, for a plate placed along the axes and the same plate turned and moved; the
-frame reader against a frame the partimix program writes (PARTIMIX_BINARY).
+on a synthetic frame, for a plate placed along the axes and the same plate turned and moved.
 """
 
 import math
@@ -125,37 +124,6 @@ class PlateCrosstalkTest(unittest.TestCase):
             self.assertEqual(run.returncode, 2, run.stderr)
             self.assertIn(reason, run.stderr)
 
-
-class FrameReaderTest(unittest.TestCase):
-    def test_reads_the_frame_partimix_writes(self):
-        binary = os.environ.get("PARTIMIX_BINARY")
-        if not binary:
-            self.skipTest("PARTIMIX_BINARY is not set (ctest sets it)")
-        case = os.path.join(TOOLS, "..", "cases", "bohl_central_cmc.yaml")
-        with tempfile.TemporaryDirectory() as out:
-            run = subprocess.run([binary, "run", case, "--out", out, "--threads", "1",
-                                  "--set", "time.end=0.002", "--set", "output.frames=true"],
-                                 capture_output=True, text=True, check=False)
-            self.assertEqual(run.returncode, 0, run.stderr)
-            arrays = read_frame(os.path.join(out, "frames", "sph_000000.vtp"))
-        count = len(arrays["Points"])
-        self.assertEqual(arrays["Points"].shape, (count, 3))
-        self.assertEqual(arrays["velocity"].shape, (count, 3))
-        for name in ("kind", "body", "id", "density"):
-            self.assertEqual(arrays[name].shape, (count, 1), name)
-        self.assertEqual(len(np.unique(arrays["id"])), count)
-        # The mixer's fill (radius 0.0693 m, height 0.1775 m, dp = 7 mm) is fluid at the water
-        # density on a lattice inside it; the plate is body 1.
-        fluid = arrays["kind"][:, 0] == FLUID
-        x = arrays["Points"][fluid]
-        spacing, radius, height = 0.007, 0.0693, 0.1775
-        self.assertAlmostEqual(fluid.sum() * spacing**3 / (math.pi * radius**2 * height), 1.0,
-                               delta=0.1)
-        self.assertLess(np.hypot(x[:, 0], x[:, 1]).max(), radius)
-        self.assertGreater(x[:, 2].min(), 0.0)
-        self.assertAlmostEqual(x[:, 2].max(), height - spacing / 2, delta=spacing)
-        self.assertAlmostEqual(np.median(arrays["density"][fluid, 0]), 1000.0, delta=50.0)
-        self.assertGreater((arrays["body"][:, 0] == 1).sum(), 0)
 
 if __name__ == "__main__":
     unittest.main()
