@@ -10,13 +10,14 @@ namespace partimix {
 namespace {
 
 using Matrix = AggregationMultigrid::Matrix;
+using MatrixView = AggregationMultigrid::MatrixView;
 using Vector = AggregationMultigrid::Vector;
 using Index = Eigen::Index;
 
-// docs/sph.md, "The pressure solve": the strength threshold, the size at which the levels stop,
-// the largest coarsest level solved directly (and the sweeps that stand in above it), the
-// weight of the one Jacobi sweep before and after the coarse step, and the coarse step's
-// over-correction.
+// docs/sph.md, "The pressure solve": the strength threshold, the size at which the levels stop
+// (and the largest solved by the dense factorisation), the largest coarsest level solved
+// directly (and the sweeps that stand in above it), the weight of the one Jacobi sweep before
+// and after the coarse step, and the coarse step's over-correction.
 constexpr double kStrength = 0.5;
 constexpr Index kCoarsestSize = 500;
 constexpr std::size_t kMaxLevels = 12;
@@ -27,37 +28,149 @@ constexpr double kOverCorrection = 1.8;
 // The finest operator's off-diagonal entries below this fraction of their row's largest are
 // lumped onto the diagonal for the V-cycle (BiCGSTAB keeps the whole matrix).
 constexpr double kLumpedFraction = 0.3;
+// An unknown's aggregate while the passes run, and for good where it has no strong coupling.
+constexpr int kFree = -1;
+constexpr int kIsolated = -2;
 
-// 1 / d, and 0 where d = 0: the Jacobi sweeps leave an unknown without a diagonal unchanged.
-Vector safe_inverse(const Vector& diagonal) {
-  return diagonal.unaryExpr([](double d) { return d != 0.0 ? 1.0 / d : 0.0; });
+Eigen::Map<Vector> as_vector(std::vector<double>& v) {
+  return {v.data(), static_cast<Index>(v.size())};
+}
+Eigen::Map<const Vector> as_vector(const std::vector<double>& v) {
+  return {v.data(), static_cast<Index>(v.size())};
 }
 
 // j is strongly coupled to i when -a_ij is at least kStrength of the row's largest -a_ik.
 template <class Fn>
-void for_each_strong(const Matrix& a, Index i, Fn&& fn) {
+void for_each_strong(const MatrixView& a, Index i, Fn&& fn) {
   double largest = 0.0;
-  for (Matrix::InnerIterator it(a, i); it; ++it) {
+  for (MatrixView::InnerIterator it(a, i); it; ++it) {
     if (it.col() != i)
       largest = std::max(largest, -it.value());
   }
   if (largest <= 0.0)
     return;
-  for (Matrix::InnerIterator it(a, i); it; ++it) {
+  for (MatrixView::InnerIterator it(a, i); it; ++it) {
     if (it.col() != i && -it.value() >= kStrength * largest)
       fn(it.col());
   }
 }
 
+// Row i of `a` lumped (lump_weak_couplings), into `entries` in column order.
+template <class MatrixType>
+void lump_row(const MatrixType& a, Index i, double fraction,
+              std::vector<std::pair<int, double>>& entries) {
+  double largest = 0.0;
+  for (typename MatrixType::InnerIterator it(a, i); it; ++it) {
+    if (it.col() != i)
+      largest = std::max(largest, std::abs(it.value()));
+  }
+  entries.clear();
+  double lumped = 0.0;
+  for (typename MatrixType::InnerIterator it(a, i); it; ++it) {
+    if (it.col() != i && std::abs(it.value()) < fraction * largest)
+      lumped += it.value();
+    else
+      entries.emplace_back(static_cast<int>(it.col()), it.value());
+  }
+  if (lumped == 0.0)
+    return;
+  const auto diagonal = std::find_if(entries.begin(), entries.end(),
+                                     [i](const auto& entry) { return entry.first == i; });
+  if (diagonal != entries.end()) {
+    diagonal->second += lumped;
+    return;
+  }
+  entries.emplace_back(static_cast<int>(i), lumped);
+  std::sort(entries.begin(), entries.end());
+}
+
+// r = b - A x, rows in parallel.
+void residual(const MatrixView& a, const std::vector<double>& x, const std::vector<double>& b,
+              std::vector<double>& r) {
+  const Index n = a.rows();
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) {
+    double sum = b[static_cast<std::size_t>(i)];
+    for (MatrixView::InnerIterator it(a, i); it; ++it)
+      sum -= it.value() * x[static_cast<std::size_t>(it.col())];
+    r[static_cast<std::size_t>(i)] = sum;
+  }
+}
+
+}  // namespace
+
+AggregationMultigrid::Matrix lump_weak_couplings(const AggregationMultigrid::Matrix& a,
+                                                 double fraction) {
+  Matrix kept(a.rows(), a.cols());
+  kept.reserve(a.nonZeros());
+  std::vector<std::pair<int, double>> entries;
+  for (Index i = 0; i < a.rows(); ++i) {
+    lump_row(a, i, fraction, entries);
+    kept.startVec(i);
+    for (const auto& [column, value] : entries)
+      kept.insertBack(i, column) = value;
+  }
+  kept.finalize();
+  return kept;
+}
+
+MatrixView AggregationMultigrid::Level::view() const {
+  return {rows, rows, static_cast<Index>(column.size()), start.data(), column.data(), value.data()};
+}
+
+void AggregationMultigrid::Level::begin(Index n) {
+  rows = n;
+  start.assign(1, 0);
+  column.clear();
+  value.clear();
+}
+
+void AggregationMultigrid::Level::size_vectors() {
+  const auto n = static_cast<std::size_t>(rows);
+  inverse_diagonal.assign(n, 0.0);  // 1 / a_ii, and 0 where a_ii = 0: that unknown stays put
+  for (std::size_t i = 0; i < n; ++i) {
+    for (auto k = static_cast<std::size_t>(start[i]); k < static_cast<std::size_t>(start[i + 1]);
+         ++k) {
+      if (static_cast<std::size_t>(column[k]) == i && value[k] != 0.0)
+        inverse_diagonal[i] = 1.0 / value[k];
+    }
+  }
+  x.resize(n);
+  b.resize(n);
+  r.resize(n);
+}
+
+void AggregationMultigrid::lump(const Matrix& a) {
+  Level& level = levels_.front();
+  level.begin(a.rows());
+  for (Index i = 0; i < a.rows(); ++i) {
+    lump_row(a, i, kLumpedFraction, row_entries_);
+    for (const auto& [col, entry] : row_entries_)
+      level.append(col, entry);
+    level.end_row();
+  }
+}
+
 // The three passes of Vanek et al. (1996): whole neighbourhoods that are still free become
 // aggregates; the rest join an aggregate one of their strong neighbours is in; what is left
-// groups with its free strong neighbours. Returns the number of aggregates.
-int aggregate(const Matrix& a, std::vector<int>& of) {
+// groups with its free strong neighbours. An unknown that has no strong coupling and that no
+// aggregate takes in (a row of p = 0 at a free surface, a wall row whose couplings are all
+// weak) stays out of the coarse levels, kIsolated: the smoother alone treats it. Returns the
+// number of aggregates.
+int AggregationMultigrid::aggregate(Level& level) {
+  const MatrixView a = level.view();
+  std::vector<int>& of = level.aggregate;
   const Index n = a.rows();
-  of.assign(static_cast<std::size_t>(n), -1);
+  of.assign(static_cast<std::size_t>(n), kFree);
+  for (Index i = 0; i < n; ++i) {
+    bool isolated = true;
+    for_each_strong(a, i, [&](Index) { isolated = false; });
+    if (isolated)
+      of[static_cast<std::size_t>(i)] = kIsolated;
+  }
   int count = 0;
   for (Index i = 0; i < n; ++i) {
-    bool free = of[static_cast<std::size_t>(i)] < 0;
+    bool free = of[static_cast<std::size_t>(i)] == kFree;
     for_each_strong(a, i, [&](Index j) { free = free && of[static_cast<std::size_t>(j)] < 0; });
     if (!free)
       continue;
@@ -65,18 +178,18 @@ int aggregate(const Matrix& a, std::vector<int>& of) {
     for_each_strong(a, i, [&](Index j) { of[static_cast<std::size_t>(j)] = count; });
     ++count;
   }
-  std::vector<int> joined = of;
+  joined_.assign(of.begin(), of.end());
   for (Index i = 0; i < n; ++i) {
-    if (of[static_cast<std::size_t>(i)] >= 0)
+    if (of[static_cast<std::size_t>(i)] != kFree)
       continue;
     for_each_strong(a, i, [&](Index j) {
-      if (joined[static_cast<std::size_t>(i)] < 0)
-        joined[static_cast<std::size_t>(i)] = of[static_cast<std::size_t>(j)];
+      if (joined_[static_cast<std::size_t>(i)] < 0)
+        joined_[static_cast<std::size_t>(i)] = std::max(of[static_cast<std::size_t>(j)], kFree);
     });
   }
-  of.swap(joined);
+  of.swap(joined_);
   for (Index i = 0; i < n; ++i) {
-    if (of[static_cast<std::size_t>(i)] >= 0)
+    if (of[static_cast<std::size_t>(i)] != kFree)
       continue;
     of[static_cast<std::size_t>(i)] = count;
     for_each_strong(a, i, [&](Index j) {
@@ -91,159 +204,147 @@ int aggregate(const Matrix& a, std::vector<int>& of) {
 // P^T A P with P_iI = 1 when unknown i is in aggregate I: row I sums the rows of its members,
 // column j going to of[j]. Built row by row (the members listed by a counting sort, a row's
 // columns gathered through `slot` and sorted), without a global sort of triplets.
-Matrix galerkin(const Matrix& a, const std::vector<int>& of, int count) {
+void AggregationMultigrid::galerkin(const Level& fine, int count, Level& coarse) {
+  const MatrixView a = fine.view();
+  const std::vector<int>& of = fine.aggregate;
   const auto coarse_count = static_cast<std::size_t>(count);
-  std::vector<int> first(coarse_count + 1, 0);
-  for (const int aggregate : of)
-    ++first[static_cast<std::size_t>(aggregate) + 1];
-  std::partial_sum(first.begin(), first.end(), first.begin());
-  std::vector<int> members(of.size());
-  std::vector<int> next(first.begin(), first.end() - 1);
-  for (std::size_t i = 0; i < of.size(); ++i)
-    members[static_cast<std::size_t>(next[static_cast<std::size_t>(of[i])]++)] =
-        static_cast<int>(i);
+  first_.assign(coarse_count + 1, 0);
+  for (const int coarse_unknown : of) {
+    if (coarse_unknown >= 0)
+      ++first_[static_cast<std::size_t>(coarse_unknown) + 1];
+  }
+  std::partial_sum(first_.begin(), first_.end(), first_.begin());
+  members_.resize(static_cast<std::size_t>(first_.back()));
+  next_.assign(first_.begin(), first_.end() - 1);
+  for (std::size_t i = 0; i < of.size(); ++i) {
+    if (of[i] >= 0)
+      members_[static_cast<std::size_t>(next_[static_cast<std::size_t>(of[i])]++)] =
+          static_cast<int>(i);
+  }
 
-  Matrix coarse(count, count);
-  std::vector<int> slot_row(coarse_count, -1);  // the row whose entry `slot` points at
-  std::vector<std::size_t> slot(coarse_count);
-  std::vector<std::pair<Index, double>> row_entries;
+  coarse.begin(count);
+  slot_row_.assign(coarse_count, -1);  // the row whose entry `slot_` points at
+  slot_.resize(coarse_count);
   for (std::size_t row = 0; row < coarse_count; ++row) {
-    row_entries.clear();
-    for (int m = first[row]; m < first[row + 1]; ++m) {
-      for (Matrix::InnerIterator it(a, members[static_cast<std::size_t>(m)]); it; ++it) {
-        const auto column = static_cast<std::size_t>(of[static_cast<std::size_t>(it.col())]);
-        if (slot_row[column] != static_cast<int>(row)) {
-          slot_row[column] = static_cast<int>(row);
-          slot[column] = row_entries.size();
-          row_entries.emplace_back(static_cast<Index>(column), it.value());
+    row_entries_.clear();
+    for (int m = first_[row]; m < first_[row + 1]; ++m) {
+      for (MatrixView::InnerIterator it(a, members_[static_cast<std::size_t>(m)]); it; ++it) {
+        const int coarse_column = of[static_cast<std::size_t>(it.col())];
+        if (coarse_column < 0)
+          continue;
+        const auto column = static_cast<std::size_t>(coarse_column);
+        if (slot_row_[column] != static_cast<int>(row)) {
+          slot_row_[column] = static_cast<int>(row);
+          slot_[column] = row_entries_.size();
+          row_entries_.emplace_back(static_cast<int>(column), it.value());
         } else {
-          row_entries[slot[column]].second += it.value();
+          row_entries_[slot_[column]].second += it.value();
         }
       }
     }
-    std::sort(row_entries.begin(), row_entries.end());
-    coarse.startVec(static_cast<Index>(row));
-    for (const auto& [column, value] : row_entries)
-      coarse.insertBack(static_cast<Index>(row), column) = value;
-  }
-  coarse.finalize();
-  return coarse;
-}
-
-// r = b - A x, rows in parallel.
-void residual(const Matrix& a, const Vector& x, const Vector& b, Vector& r) {
-  const Index n = a.rows();
-#pragma omp parallel for schedule(static)
-  for (Index i = 0; i < n; ++i) {
-    double sum = b[i];
-    for (Matrix::InnerIterator it(a, i); it; ++it)
-      sum -= it.value() * x[it.col()];
-    r[i] = sum;
+    std::sort(row_entries_.begin(), row_entries_.end());
+    for (const auto& [col, entry] : row_entries_)
+      coarse.append(col, entry);
+    coarse.end_row();
   }
 }
 
-}  // namespace
-
-AggregationMultigrid::Matrix lump_weak_couplings(const AggregationMultigrid::Matrix& a,
-                                                 double fraction) {
-  Matrix kept(a.rows(), a.cols());
-  kept.reserve(a.nonZeros());
-  std::vector<std::pair<Index, double>> row_entries;
-  for (Index i = 0; i < a.rows(); ++i) {
-    double largest = 0.0;
-    for (Matrix::InnerIterator it(a, i); it; ++it) {
-      if (it.col() != i)
-        largest = std::max(largest, std::abs(it.value()));
-    }
-    row_entries.clear();
-    double lumped = 0.0;
-    for (Matrix::InnerIterator it(a, i); it; ++it) {
-      if (it.col() != i && std::abs(it.value()) < fraction * largest)
-        lumped += it.value();
-      else
-        row_entries.emplace_back(it.col(), it.value());
-    }
-    if (lumped != 0.0 && std::none_of(row_entries.begin(), row_entries.end(),
-                                      [i](const auto& entry) { return entry.first == i; })) {
-      row_entries.emplace_back(i, 0.0);
-      std::sort(row_entries.begin(), row_entries.end());
-    }
-    kept.startVec(i);
-    for (const auto& [column, value] : row_entries)
-      kept.insertBack(i, column) = column == i ? value + lumped : value;
-  }
-  kept.finalize();
-  return kept;
-}
-
-void AggregationMultigrid::setup(Matrix a) {
-  a = lump_weak_couplings(a, kLumpedFraction);
-  levels_.clear();
-  coarsest_.reset();
+AggregationMultigrid& AggregationMultigrid::compute(const Matrix& a) {
+  if (levels_.empty())
+    levels_.emplace_back();
+  lump(a);
+  level_count_ = 1;
   while (true) {
-    Level& level = levels_.emplace_back();
-    level.a = std::move(a);
-    level.a.makeCompressed();
-    const Index n = level.a.rows();
-    level.inverse_diagonal = safe_inverse(level.a.diagonal());
-    level.x.resize(n);
-    level.b.resize(n);
-    level.r.resize(n);
-    if (n <= kCoarsestSize || levels_.size() == kMaxLevels)
+    Level& level = levels_[level_count_ - 1];
+    level.size_vectors();
+    const Index n = level.rows;
+    if (n <= kCoarsestSize || level_count_ == kMaxLevels)
       break;
-    const int count = aggregate(level.a, level.aggregate);
-    if (count >= n)
+    const int count = aggregate(level);
+    if (count == 0 || count >= n)
       break;
-    a = galerkin(level.a, level.aggregate, count);
+    if (levels_.size() == level_count_)
+      levels_.emplace_back();
+    galerkin(levels_[level_count_ - 1], count, levels_[level_count_]);
+    ++level_count_;
   }
-  if (levels_.back().a.rows() > kLargestDirectSize)
+  factor_coarsest();
+  return *this;
+}
+
+// A failed factorisation must not be solved with (Eigen's SparseLU reads past its arrays): the
+// sweeps stand in, and BiCGSTAB judges whether the system itself can be solved.
+void AggregationMultigrid::factor_coarsest() {
+  const MatrixView a = levels_[level_count_ - 1].view();
+  coarsest_ = Coarsest::jacobi;
+  if (a.rows() <= kCoarsestSize) {
+    if (dense_.factor(a))
+      coarsest_ = Coarsest::dense;
     return;
-  coarsest_ = std::make_unique<Eigen::SparseLU<Eigen::SparseMatrix<double>>>();
-  coarsest_->compute(Eigen::SparseMatrix<double>(levels_.back().a));
-  // A failed factorisation must not be solved with (Eigen reads past its arrays): the sweeps
-  // stand in, and BiCGSTAB judges whether the system itself can be solved.
-  if (coarsest_->info() != Eigen::Success)
-    coarsest_.reset();
+  }
+  if (a.rows() > kLargestDirectSize)
+    return;
+  sparse_ = std::make_unique<Eigen::SparseLU<Eigen::SparseMatrix<double>>>();
+  sparse_->compute(Eigen::SparseMatrix<double>(a));
+  if (sparse_->info() == Eigen::Success)
+    coarsest_ = Coarsest::sparse;
 }
 
 // The coarsest level directly, or, when the aggregation stalled above kLargestDirectSize
 // unknowns (a matrix without strong couplings) or the factorisation failed, by Jacobi sweeps.
 void AggregationMultigrid::solve_coarsest(const Level& l) const {
-  if (coarsest_) {
-    l.x = coarsest_->solve(l.b);
+  if (coarsest_ == Coarsest::dense) {
+    dense_.solve(l.b.data(), l.x.data());
     return;
   }
-  l.x = kJacobiWeight * l.inverse_diagonal.cwiseProduct(l.b);
+  if (coarsest_ == Coarsest::sparse) {
+    as_vector(l.x) = sparse_->solve(as_vector(l.b));
+    return;
+  }
+  as_vector(l.x) = kJacobiWeight * as_vector(l.inverse_diagonal).cwiseProduct(as_vector(l.b));
   for (int sweep = 1; sweep < kStalledSweeps; ++sweep) {
-    residual(l.a, l.x, l.b, l.r);
-    l.x += kJacobiWeight * l.inverse_diagonal.cwiseProduct(l.r);
+    residual(l.view(), l.x, l.b, l.r);
+    as_vector(l.x) += kJacobiWeight * as_vector(l.inverse_diagonal).cwiseProduct(as_vector(l.r));
   }
 }
 
 // One V-cycle on levels_[level] for its b, into its x.
 void AggregationMultigrid::cycle(std::size_t level) const {
   const Level& l = levels_[level];
-  if (level + 1 == levels_.size()) {
+  if (level + 1 == level_count_) {
     solve_coarsest(l);
     return;
   }
-  l.x = kJacobiWeight * l.inverse_diagonal.cwiseProduct(l.b);  // one sweep from x = 0
-  residual(l.a, l.x, l.b, l.r);
+  const MatrixView a = l.view();
+  const Eigen::Map<const Vector> inverse_diagonal = as_vector(l.inverse_diagonal);
+  as_vector(l.x) = kJacobiWeight * inverse_diagonal.cwiseProduct(as_vector(l.b));  // from x = 0
+  residual(a, l.x, l.b, l.r);
   const Level& next = levels_[level + 1];
-  next.b.setZero();
-  for (Index i = 0; i < l.a.rows(); ++i)
-    next.b[l.aggregate[static_cast<std::size_t>(i)]] += l.r[i];
+  std::fill(next.b.begin(), next.b.end(), 0.0);
+  for (std::size_t i = 0; i < l.x.size(); ++i) {
+    if (l.aggregate[i] >= 0)
+      next.b[static_cast<std::size_t>(l.aggregate[i])] += l.r[i];
+  }
   cycle(level + 1);
-  for (Index i = 0; i < l.a.rows(); ++i)
-    l.x[i] += kOverCorrection * next.x[l.aggregate[static_cast<std::size_t>(i)]];
-  residual(l.a, l.x, l.b, l.r);
-  l.x += kJacobiWeight * l.inverse_diagonal.cwiseProduct(l.r);
+  for (std::size_t i = 0; i < l.x.size(); ++i) {
+    if (l.aggregate[i] >= 0)
+      l.x[i] += kOverCorrection * next.x[static_cast<std::size_t>(l.aggregate[i])];
+  }
+  residual(a, l.x, l.b, l.r);
+  as_vector(l.x) += kJacobiWeight * inverse_diagonal.cwiseProduct(as_vector(l.r));
 }
 
 AggregationMultigrid::Vector AggregationMultigrid::solve(const Vector& b) const {
-  levels_.front().b = b;
+  Vector x(b.size());
+  apply(b, x);
+  return x;
+}
+
+void AggregationMultigrid::apply(const Vector& in, Vector& out) const {
+  const Level& finest = levels_.front();
+  as_vector(finest.b) = in;
   cycle(0);
-  return levels_.front().x;
+  out = as_vector(finest.x);
 }
 
 }  // namespace partimix

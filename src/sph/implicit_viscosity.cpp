@@ -9,10 +9,8 @@
 
 namespace partimix::sph {
 
-ImplicitViscosity::ImplicitViscosity(double tolerance, int max_iterations) {
-  solver_.setTolerance(tolerance);
-  solver_.setMaxIterations(max_iterations);
-}
+ImplicitViscosity::ImplicitViscosity(double tolerance, int max_iterations)
+    : solver_(tolerance, max_iterations) {}
 
 // Row i's partners: fluid ones and the diagonal sorted by index, then the walls (whose indices
 // follow the fluid's).
@@ -142,10 +140,10 @@ LinearSolve ImplicitViscosity::solve(Fields& f, std::size_t fluid_count, const P
   for (int axis = 0; axis < p.dimensions; ++axis) {
     for (std::size_t i = 0; i < fluid_count; ++i)
       component_[static_cast<Eigen::Index>(i)] = f.velocity[i][axis];
-    component_ = solver_.solveWithGuess(rhs_.col(axis), component_);
-    result.iterations = std::max(result.iterations, static_cast<int>(solver_.iterations()));
-    result.residual = std::max(result.residual, solver_.error());
-    result.converged = result.converged && solver_.info() == Eigen::Success;
+    const LinearSolve solve = solver_.solve(matrix_, rhs_.col(axis), component_);
+    result.iterations = std::max(result.iterations, solve.iterations);
+    result.residual = std::max(result.residual, solve.residual);
+    result.converged = result.converged && solve.converged;
     for (std::size_t i = 0; i < fluid_count; ++i)
       f.velocity[i][axis] = component_[static_cast<Eigen::Index>(i)];
   }

@@ -2,19 +2,20 @@
 // Backward-Euler viscous prediction of the incompressible scheme (docs/sph.md, "Implicit
 // viscosity"): u* - dt L(u*) = u^n + dt g with L the Morris operator, walls through their held
 // no-slip ghost velocities; one symmetric positive-definite system per velocity component,
-// solved by Eigen's conjugate gradient. The pairs and their kernel factors are gathered once per
-// step (gather_pairs); each Picard solve of the step only refills the matrix's values in place.
+// solved by the conjugate gradient method (core/conjugate_gradient.hpp). The pairs and their kernel
+// factors are gathered once per step (gather_pairs); each Picard solve of the step only refills the
+// matrix's values in place.
 #include <cstdint>
 #include <span>
 #include <vector>
 
-#include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCore>
 
+#include "core/conjugate_gradient.hpp"
+#include "core/linear_solve.hpp"
 #include "particles/cell_grid.hpp"
 #include "sph/fields.hpp"
 #include "sph/kernel_table.hpp"
-#include "sph/linear_solve.hpp"
 #include "sph/parameters.hpp"
 
 namespace partimix::sph {
@@ -60,9 +61,7 @@ class ImplicitViscosity {
   Eigen::MatrixX3d rhs_;
   Eigen::VectorXd component_;
   Matrix matrix_;
-  Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper,
-                           Eigen::DiagonalPreconditioner<double>>
-      solver_;
+  ConjugateGradient solver_;
 };
 
 }  // namespace partimix::sph

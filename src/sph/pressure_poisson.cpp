@@ -30,10 +30,8 @@ Vec3 relative_velocity(std::size_t i, std::size_t j, const Fields& f, const Para
 
 }  // namespace
 
-PressurePoisson::PressurePoisson(double tolerance, int max_iterations) {
-  solver_.setTolerance(tolerance);
-  solver_.setMaxIterations(max_iterations);
-}
+PressurePoisson::PressurePoisson(double tolerance, int max_iterations)
+    : solver_(tolerance, max_iterations) {}
 
 // Row i: (sum_j A_ij) p_i - sum_j A_ij p_j = -rho0 (div u*)_i / dt with
 // A_ij = -2 V_j (r_ij . grad_i W_ij) / (r_ij^2 + eta^2) >= 0, or p_i = 0 at a free surface.
@@ -195,13 +193,13 @@ LinearSolve PressurePoisson::solve(Fields& f, std::size_t fluid_count, const Cel
   const std::size_t n = f.position.size();
   rhs_.resize(static_cast<Eigen::Index>(n));
   assemble(f, fluid_count, grid, kernel, gradient_kernel, p, dt);
-  solver_.compute(matrix_);
+  multigrid_.compute(matrix_);
   if (solution_.size() != rhs_.size())
     solution_.setZero(rhs_.size());
   const double guess_offset = has_dirichlet_row_ ? 0.0 : mean_offset_;
   for (std::size_t i = 0; i < n; ++i)
     solution_[static_cast<Eigen::Index>(i)] = f.pressure[i] + guess_offset;
-  solution_ = solver_.solveWithGuess(rhs_, solution_);
+  const LinearSolve result = solver_.solve(matrix_, multigrid_, rhs_, solution_);
   double mean = 0.0;
   if (!has_dirichlet_row_) {
     for (std::size_t i = 0; i < fluid_count; ++i)
@@ -213,8 +211,7 @@ LinearSolve PressurePoisson::solve(Fields& f, std::size_t fluid_count, const Cel
     f.pressure[i] = solution_[static_cast<Eigen::Index>(i)] - mean;
     f.density[i] = p.reference_density;
   }
-  return {static_cast<int>(solver_.iterations()), solver_.error(),
-          solver_.info() == Eigen::Success};
+  return result;
 }
 
 void project_velocities(Fields& f, std::size_t fluid_count, const CellGrid& grid,

@@ -2,18 +2,19 @@
 // The pressure Poisson equation of the incompressible (projection) scheme, docs/sph.md
 // "Incompressible SPH": one row per particle (fluid: the Laplacian of p / rho0 equals the
 // divergence of the predicted velocity over dt; fluid at a free surface: p = 0; wall: Adami's
-// extrapolation from the fluid), solved by Eigen's BiCGSTAB, and the projection of the velocity.
+// extrapolation from the fluid), solved by BiCGSTAB with a multigrid preconditioner, and the
+// projection of the velocity.
 #include <utility>
 #include <vector>
 
-#include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCore>
 
 #include "core/aggregation_multigrid.hpp"
+#include "core/bicgstab.hpp"
+#include "core/linear_solve.hpp"
 #include "particles/cell_grid.hpp"
 #include "sph/fields.hpp"
 #include "sph/kernel_table.hpp"
-#include "sph/linear_solve.hpp"
 #include "sph/parameters.hpp"
 
 namespace partimix::sph {
@@ -62,7 +63,8 @@ class PressurePoisson {
   Eigen::VectorXd rhs_;
   Eigen::VectorXd solution_;
   Matrix matrix_;
-  Eigen::BiCGSTAB<Matrix, AggregationMultigrid> solver_;
+  AggregationMultigrid multigrid_;
+  Bicgstab solver_;
   bool has_dirichlet_row_ = false;
   double mean_offset_ = 0.0;  // the constant taken off the last solution: the next one's guess
 };
