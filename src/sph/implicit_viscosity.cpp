@@ -5,6 +5,7 @@
 
 #include <omp.h>
 
+#include "core/sparse_storage.hpp"
 #include "sph/pair_rates.hpp"
 
 namespace partimix::sph {
@@ -76,7 +77,7 @@ void ImplicitViscosity::lay_out_matrix(std::size_t fluid_count) {
   std::size_t nonzeros = 0;
   for (std::size_t i = 0; i < fluid_count; ++i)
     nonzeros += wall_start_[i] - row_start_[i];
-  matrix_.resizeNonZeros(static_cast<Eigen::Index>(nonzeros));
+  resize_nonzeros_with_room(matrix_, static_cast<Eigen::Index>(nonzeros));
   std::size_t k = 0;
   for (std::size_t i = 0; i < fluid_count; ++i) {
     matrix_.outerIndexPtr()[i] = static_cast<int>(k);

@@ -9,6 +9,8 @@
 #include <omp.h>
 #include <vector>
 
+#include "core/sparse_storage.hpp"
+
 namespace partimix::sph {
 
 namespace {
@@ -166,7 +168,7 @@ void PressurePoisson::lay_out_matrix(std::size_t n, std::size_t fluid_count) {
   }
   for (std::size_t i = 0; i < n; ++i)
     outer[i + 1] += outer[i];
-  matrix_.resizeNonZeros(outer[n]);
+  resize_nonzeros_with_room(matrix_, outer[n]);
   const double regularisation = has_dirichlet_row_ ? 1.0 : 1.0 + kRegularisation;
   const auto lists = static_cast<std::ptrdiff_t>(thread_rows_.size());
 #pragma omp parallel for schedule(static, 1)

@@ -57,7 +57,10 @@ TEST(Bicgstab, SolvesANonsymmetricSystemAsTheDirectSolverDoes) {
   const LinearSolve result = solver.solve(a, Identity(), b, x);
   EXPECT_TRUE(result.converged);
   EXPECT_LE(result.residual, 1e-10);
-  EXPECT_LE((b - a * x).norm(), 1e-10 * b.norm() * 1.01);
+  // The residual reported is BiCGSTAB's recurrence; the true one departs from it by round-off,
+  // of order iterations x machine epsilon x |A| |x| (some 1e-13 |b| here), so it must meet the
+  // tolerance to within 1e-12 |b|.
+  EXPECT_LE((b - a * x).norm(), (1e-10 + 1e-12) * b.norm());
   EXPECT_LT((x - exact).lpNorm<Eigen::Infinity>(), 1e-8 * exact.lpNorm<Eigen::Infinity>());
 }
 
