@@ -1,0 +1,103 @@
+#include "cfd/fluid_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "cfd/face_stencil.hpp"
+
+namespace partimix::cfd {
+
+FluidSolver::FluidSolver(const grid::StaggeredGrid& grid, const FlowMask& mask,
+                         const BoxSides& sides, const FluidSettings& settings)
+    : grid_(grid),
+      mask_(mask),
+      sides_(sides),
+      settings_(settings),
+      velocity_(face_arrays(grid, 0.0)),
+      pressure_(grid.cell_count(), 0.0),
+      cell_void_fraction_(grid.cell_count(), 1.0),
+      cell_viscosity_(grid.cell_count(), settings.viscosity),
+      void_fraction_(face_arrays(grid, 1.0)),
+      convection_(face_arrays(grid, 0.0)),
+      diagonal_(face_arrays(grid, 0.0)),
+      rhs_(face_arrays(grid, 0.0)),
+      coefficient_(face_arrays(grid, 0.0)),
+      source_(grid.cell_count(), 0.0),
+      predictor_(settings.momentum_tolerance, settings.max_iterations),
+      projection_(settings.pressure_tolerance, settings.max_iterations) {
+  set_side_faces();
+  predictor_.lay_out(grid_, mask_);
+  projection_.lay_out(grid_, mask_);
+}
+
+// The faces on the box's sides carry the side's velocity normal to it.
+void FluidSolver::set_side_faces() {
+  for (int axis = 0; axis < grid_.dimensions(); ++axis) {
+    if (grid_.periodic(axis))
+      continue;
+    grid_.for_each_face(axis, [&](const Coordinates& f, std::size_t index) {
+      if (f[axis] == 0 || f[axis] == grid_.cells(axis))
+        velocity_[axis][index] = box_side(sides_, axis, f[axis] == 0 ? -1 : 1).velocity[axis];
+    });
+  }
+}
+
+double FluidSolver::stable_dt() const {
+  double dt = settings_.max_dt;
+  for (int axis = 0; axis < grid_.dimensions(); ++axis) {
+    double fastest = 0.0;
+    for (const double u : velocity_[axis])
+      fastest = std::max(fastest, std::abs(u));
+    if (fastest > 0.0)
+      dt = std::min(dt, settings_.cfl * grid_.spacing(axis) / fastest);
+  }
+  for (const BoxSide& side : sides_)
+    for (int axis = 0; axis < grid_.dimensions(); ++axis)
+      if (side.velocity[axis] != 0.0)
+        dt = std::min(dt, settings_.cfl * grid_.spacing(axis) / std::abs(side.velocity[axis]));
+  return dt;
+}
+
+// D_f = ρ ε_f / Δt, r_f = ρ ε_f u_f / Δt - C_f - ε_f (p_above - p_below) / h + ε_f ρ g, and the
+// projection's a_f = Δt / ρ.
+void FluidSolver::explicit_terms(double dt) {
+  const double rho = settings_.density;
+  for (int a = 0; a < grid_.dimensions(); ++a)
+    grid_.for_each_face(a, [&](const Coordinates& f, std::size_t index) {
+      if (!mask_.open_face[a][index])
+        return;
+      const double eps = void_fraction_[a][index];
+      const double gradient = gradient_across(grid_, a, f, pressure_);
+      diagonal_[a][index] = rho * eps / dt;
+      rhs_[a][index] = rho * eps * velocity_[a][index] / dt - convection_[a][index] -
+                       eps * gradient + eps * rho * settings_.gravity[a];
+      coefficient_[a][index] = dt / rho;
+    });
+}
+
+LinearSolve FluidSolver::step(double dt) {
+  convective_term(grid_, mask_, settings_.convection, settings_.density, void_fraction_, velocity_,
+                  convection_);
+  explicit_terms(dt);
+  momentum_solve_ = predictor_.solve(grid_, sides_, cell_void_fraction_, cell_viscosity_, diagonal_,
+                                     rhs_, velocity_);
+  const LinearSolve pressure = projection_.project(grid_, mask_, void_fraction_, coefficient_,
+                                                   source_, velocity_, correction_);
+  for (std::size_t c = 0; c < pressure_.size(); ++c)
+    pressure_[c] += correction_[c];
+  return pressure;
+}
+
+Vec3 FluidSolver::cell_velocity(int i, int j, int k) const {
+  Vec3 u = Vec3::Zero();
+  const Coordinates c{i, j, k};
+  for (int a = 0; a < grid_.dimensions(); ++a) {
+    Coordinates upper = c;
+    upper[a] = grid_.wrap_face(a, c[a] + 1);
+    u[a] =
+        0.5 * (velocity_[a][face_index(grid_, a, c)] + velocity_[a][face_index(grid_, a, upper)]);
+  }
+  return u;
+}
+
+}  // namespace partimix::cfd
