@@ -21,6 +21,8 @@ class StaggeredGrid {
                 const Vec3& spacing, const std::array<bool, 3>& periodic, double max_cells);
 
   int dimensions() const { return dimensions_; }
+  // The box's lowest corner.
+  const Vec3& origin() const { return origin_; }
   int cells(int axis) const { return cells_[axis]; }
   double spacing(int axis) const { return spacing_[axis]; }
   bool periodic(int axis) const { return periodic_[axis]; }
