@@ -8,6 +8,7 @@
 #include "analysis/kinetic_energy.hpp"
 #include "analysis/max_speed.hpp"
 #include "core/error.hpp"
+#include "io/vti_frame_writer.hpp"
 #include "io/vtk_frame_writer.hpp"
 
 namespace partimix::app {
@@ -63,7 +64,9 @@ std::unique_ptr<analysis::Analysis> create_analysis(const io::AnalysisSpec& spec
 // particles with angular velocities and radii (DEM).
 MethodOutputs::MethodOutputs(const io::Case& the_case, std::size_t m,
                              const io::MethodInstance& method)
-    : name_(the_case.methods[m].name), method_(method) {
+    : name_(the_case.methods[m].name),
+      method_(method),
+      frame_extension_(method.solver->grid_frame() != nullptr ? "vti" : "vtp") {
   analyses_.push_back(std::make_unique<analysis::KineticEnergy>(*method.store));
   analyses_.push_back(std::make_unique<analysis::MaxSpeed>());
   prefixes_.assign(2, "");
@@ -195,8 +198,11 @@ void MethodOutputs::open_frames(const std::filesystem::path& output_dir,
 
 std::string MethodOutputs::write_frame(const std::filesystem::path& output_dir, double time) {
   const std::string file =
-      fmt::format("frames/{}_{:06d}.vtp", name_, collection_->entries().size());
-  io::write_vtp_frame(output_dir / file, *method_.store, time, method_.solver->frame_arrays());
+      fmt::format("frames/{}_{:06d}.{}", name_, collection_->entries().size(), frame_extension());
+  if (const GridFrame* grid = method_.solver->grid_frame())
+    io::write_vti_frame(output_dir / file, *grid, time);
+  else
+    io::write_vtp_frame(output_dir / file, *method_.store, time, method_.solver->frame_arrays());
   collection_->add(time, file);
   return file;
 }

@@ -1,7 +1,8 @@
 #pragma once
 // What a run writes of one method (DESIGN.md, "Inputs, outputs, errors"): its analyses, which
 // fill its part of each series.csv row, and its frame series, frames/<method>_NNNNNN.vtp listed
-// in <method>.pvd. With several methods every series column is named <method>.<column>.
+// in <method>.pvd (.vti, the cells, for a method on a grid). With several methods every series
+// column is named <method>.<column>.
 #include <filesystem>
 #include <memory>
 #include <span>
@@ -53,6 +54,8 @@ class MethodOutputs {
   std::string write_frame(const std::filesystem::path& output_dir, double time);
   const std::vector<io::PvdEntry>& frames() const { return collection_->entries(); }
   std::string collection_name() const { return name_ + ".pvd"; }
+  // "vti" for a method on a grid (its cells, Solver::grid_frame), else "vtp" (its particles).
+  const std::string& frame_extension() const { return frame_extension_; }
 
  private:
   std::string name_;
@@ -66,6 +69,7 @@ class MethodOutputs {
   std::size_t column_count_ = 0;
   bool needs_body_forces_ = false;
   std::unique_ptr<io::PvdWriter> collection_;
+  std::string frame_extension_;
 };
 
 }  // namespace partimix::app

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -64,10 +65,10 @@ std::vector<io::PvdEntry> restore_frames(const std::string& method, const StateA
 // Frame files of `method` numbered from `first` on: a resumed run writes them again, and must
 // not leave those of the interrupted run beyond where it stops.
 void remove_frames_from(const std::filesystem::path& frames, const std::string& method,
-                        std::size_t first) {
+                        std::string_view extension, std::size_t first) {
   std::error_code error;
   for (std::size_t k = first;; ++k) {
-    const auto file = frames / fmt::format("{}_{:06d}.vtp", method, k);
+    const auto file = frames / fmt::format("{}_{:06d}.{}", method, k, extension);
     if (!std::filesystem::remove(file, error))
       break;
   }
@@ -160,7 +161,8 @@ void Runner::start_from(const StateArchive& checkpoint) {
   for (AnalysisSeries& series : own_series_)
     series.reopen(out);
   for (std::size_t m = 0; m < outputs_.size(); ++m) {
-    remove_frames_from(out / "frames", outputs_[m].name(), frames[m].size());
+    remove_frames_from(out / "frames", outputs_[m].name(), outputs_[m].frame_extension(),
+                       frames[m].size());
     outputs_[m].open_frames(out, std::move(frames[m]));
   }
 }

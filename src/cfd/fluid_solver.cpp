@@ -23,6 +23,7 @@ FluidSolver::FluidSolver(const grid::StaggeredGrid& grid, const FlowMask& mask,
       rhs_(face_arrays(grid, 0.0)),
       coefficient_(face_arrays(grid, 0.0)),
       source_(grid.cell_count(), 0.0),
+      correction_(grid.cell_count(), 0.0),
       predictor_(settings.momentum_tolerance, settings.max_iterations),
       projection_(settings.pressure_tolerance, settings.max_iterations) {
   set_side_faces();
@@ -86,6 +87,14 @@ LinearSolve FluidSolver::step(double dt) {
   for (std::size_t c = 0; c < pressure_.size(); ++c)
     pressure_[c] += correction_[c];
   return pressure;
+}
+
+void FluidSolver::restore(const FaceArrays& velocity, const std::vector<double>& pressure,
+                          const std::vector<double>& correction) {
+  velocity_ = velocity;
+  pressure_ = pressure;
+  correction_ = correction;
+  projection_.set_guess(correction_);
 }
 
 Vec3 FluidSolver::cell_velocity(int i, int j, int k) const {

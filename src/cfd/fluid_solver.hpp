@@ -42,9 +42,14 @@ class FluidSolver {
 
   const grid::StaggeredGrid& grid() const { return grid_; }
   const FaceArrays& velocity() const { return velocity_; }
-  FaceArrays& velocity() { return velocity_; }
+  const FlowMask& mask() const { return mask_; }
   const std::vector<double>& pressure() const { return pressure_; }
   const LinearSolve& momentum_solve() const { return momentum_solve_; }
+  // φ of the last step's pressure correction per cell, the next solve's first guess.
+  const std::vector<double>& last_correction() const { return correction_; }
+  // The state a step reads, from a checkpoint: the face velocities, p and the last φ.
+  void restore(const FaceArrays& velocity, const std::vector<double>& pressure,
+               const std::vector<double>& correction);
   // The mean of the faces on the cell's two sides along each axis.
   Vec3 cell_velocity(int i, int j, int k) const;
 

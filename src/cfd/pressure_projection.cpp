@@ -142,6 +142,11 @@ void PressureProjection::correct(const grid::StaggeredGrid& grid, const FlowMask
     });
 }
 
+void PressureProjection::set_guess(const std::vector<double>& correction) {
+  for (std::size_t row = 0; row < row_cell_.size(); ++row)
+    solution_[static_cast<Eigen::Index>(row)] = correction[row_cell_[row]];
+}
+
 LinearSolve PressureProjection::project(const grid::StaggeredGrid& grid, const FlowMask& mask,
                                         const FaceArrays& void_fraction,
                                         const FaceArrays& coefficient,

@@ -42,6 +42,9 @@ class PressureProjection {
                       const std::vector<double>& source, FaceArrays& velocity,
                       std::vector<double>& correction);
 
+  // The first guess of the next solve from a φ per cell (the last step's, on a restore).
+  void set_guess(const std::vector<double>& correction);
+
   // The largest |mean right-hand side| of a region in the last solve, per unit volume [1/s].
   double imbalance() const { return imbalance_; }
 

@@ -16,23 +16,13 @@
 #include <vector>
 
 #include "io/atomic_file.hpp"
-#include "io/xml_text.hpp"
+#include "io/vtk_appended.hpp"
 
 namespace partimix::io {
 namespace {
 
 static_assert(std::endian::native == std::endian::little, "frames are written as LittleEndian");
 static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 must be three packed doubles");
-
-// One array of the appended block: how the XML describes it and how its bytes are written.
-struct AppendedArray {
-  std::string name;
-  std::string_view type;
-  int components = 1;
-  std::size_t tuples = 0;
-  std::uint64_t bytes = 0;
-  std::function<void(std::ostream&)> write;
-};
 
 // The arrays of a frame in file order; the XML header and the appended block follow it.
 struct Frame {
@@ -42,16 +32,6 @@ struct Frame {
   std::vector<AppendedArray> coordinates;
   std::vector<AppendedArray> verts;
 };
-
-template <class T>
-AppendedArray raw_array(const std::string& name, std::string_view type, int components,
-                        std::span<const T> values) {
-  const char* data = reinterpret_cast<const char*>(values.data());
-  const std::uint64_t bytes = values.size_bytes();
-  return {name, type, components, values.size(), bytes, [data, bytes](std::ostream& out) {
-            out.write(data, static_cast<std::streamsize>(bytes));
-          }};
-}
 
 // Writes first, first + 1, ..., first + count - 1 as Int64 through a fixed-size buffer.
 void write_counting(std::ostream& out, std::size_t count, std::int64_t first) {
@@ -81,21 +61,6 @@ void add_output_fields(std::vector<AppendedArray>& arrays, const std::deque<Fiel
   }
 }
 
-void add_frame_arrays(std::vector<AppendedArray>& arrays, std::span<const FrameArray> extra,
-                      std::size_t points) {
-  for (const FrameArray& array : extra) {
-    if (array.components < 1 ||
-        array.values.size() != points * static_cast<std::size_t>(array.components)) {
-      throw std::invalid_argument(
-          fmt::format("frame array '{}' holds {} values, not {} components for {} points",
-                      array.name, array.values.size(), array.components, points));
-    }
-    AppendedArray appended = raw_array(array.name, "Float64", array.components, array.values);
-    appended.tuples = points;
-    arrays.push_back(std::move(appended));
-  }
-}
-
 Frame describe_frame(const ParticleStore& store, const double& time,
                      std::span<const FrameArray> extra) {
   Frame frame;
@@ -112,24 +77,6 @@ Frame describe_frame(const ParticleStore& store, const double& time,
   frame.verts.push_back(counting_array("connectivity", frame.points, 0));
   frame.verts.push_back(counting_array("offsets", frame.points, 1));
   return frame;
-}
-
-// Appends one <DataArray> per array; offset runs over the appended block (count + bytes each).
-void describe_section(std::string& xml, std::string_view tag, std::string_view indent,
-                      const std::vector<AppendedArray>& arrays, bool with_tuples,
-                      std::uint64_t& offset) {
-  auto out = std::back_inserter(xml);
-  fmt::format_to(out, "{}<{}>\n", indent, tag);
-  for (const auto& array : arrays) {
-    fmt::format_to(out, "{}  <DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\"", indent,
-                   array.type, xml_attribute(array.name), array.components);
-    if (with_tuples) {
-      fmt::format_to(out, " NumberOfTuples=\"{}\"", array.tuples);
-    }
-    fmt::format_to(out, " format=\"appended\" offset=\"{}\"/>\n", offset);
-    offset += sizeof(std::uint64_t) + array.bytes;
-  }
-  fmt::format_to(out, "{}</{}>\n", indent, tag);
 }
 
 std::string xml_header(const Frame& frame) {
@@ -153,13 +100,6 @@ std::string xml_header(const Frame& frame) {
       "  <AppendedData encoding=\"raw\">\n"
       "   _";
   return xml;
-}
-
-void write_block(std::ostream& out, const std::vector<AppendedArray>& arrays) {
-  for (const auto& array : arrays) {
-    out.write(reinterpret_cast<const char*>(&array.bytes), sizeof(array.bytes));
-    array.write(out);
-  }
 }
 
 void write_frame(std::ostream& out, const Frame& frame) {

@@ -10,6 +10,7 @@
 #include "core/state_archive.hpp"
 #include "particles/domain.hpp"
 #include "particles/frame_array.hpp"
+#include "particles/grid_frame.hpp"
 #include "particles/particle_store.hpp"
 
 namespace partimix {
@@ -33,6 +34,10 @@ class Solver {
   // Arrays that a frame carries beside the store's output fields, computed from the current
   // state when a frame is written, never in a step (particles/frame_array.hpp). None by default.
   virtual std::vector<FrameArray> frame_arrays() { return {}; }
+  // A method on a grid: the frame of its cells (particles/grid_frame.hpp), written in place of
+  // its particles, computed from the current state; its arrays stay valid until the next step
+  // or call. Null for a method whose frames are its particles (the default).
+  virtual const GridFrame* grid_frame() { return nullptr; }
   // The method's full state for a checkpoint, under `prefix` ("methods/sph/"): its particles'
   // fields (particles/store_state.hpp) and whatever else its next step reads (contact
   // histories, its time and step count, the inputs of its time step). After restore() the

@@ -1,8 +1,9 @@
 // The lid-driven cavity at Re = 100 on the grid fluid (docs/cfd.md, "Tests the code will be
 // held to") against Ghia, Ghia & Shin (1982), Tables I and II: u along the vertical centre-line
-// and v along the horizontal one at their points inside the cavity. A 1 x 1 m cavity, lid
-// speed U = 1 m/s, ρ = 1, μ = 0.01 Pa s, 64 x 64 cells, van Leer's TVD convection, run to
-// t = 30 L / U; steady means that the profiles at 25 and 30 s differ by less than 1e-3 U.
+// and v along the horizontal one at their points inside the cavity. cases/cfd_cavity.yaml: a
+// 1 x 1 m cavity, lid speed U = 1 m/s, ρ = 1, μ = 0.01 Pa s, 64 x 64 cells, van Leer's TVD
+// convection, run to t = 30 L / U; steady means that the profiles at 25 and 30 s differ by less
+// than 1e-3 U.
 // The staggered velocities are interpolated linearly to the points. Asserted (set before the
 // first run): the largest difference from Ghia within 3% of U, the root mean square within 1.5%.
 #include <gtest/gtest.h>
@@ -12,8 +13,11 @@
 #include <cmath>
 #include <cstdio>
 
-#include "cfd/fluid_solver.hpp"
+#include "app/simulation.hpp"
+#include "cfd/cfd_solver.hpp"
 #include "grid/staggered_grid.hpp"
+#include "io/case.hpp"
+#include "support/case_run.hpp"
 #include "support/ghia_cavity.hpp"
 
 namespace partimix::cfd {
@@ -52,31 +56,26 @@ std::array<double, 30> profiles(const FluidSolver& fluid) {
   return values;
 }
 
+// cases/cfd_cavity.yaml through the run to 25 s, then the same fluid stepped on to 30 s.
 TEST(GridCavity, CentreLineVelocitiesFollowGhiaAtRe100) {
-  const double h = 1.0 / kCells;
-  const grid::StaggeredGrid grid(2, Vec3::Zero(), {kCells, kCells, 1}, Vec3(h, h, 1.0), {}, 1e6);
-  BoxSides sides;
-  sides[3].velocity = Vec3(1.0, 0.0, 0.0);  // the lid, y = 1
-  FluidSettings settings;
-  settings.density = 1.0;
-  settings.viscosity = 0.01;
-  settings.max_dt = 0.01;
-  FluidSolver fluid(grid, open_mask(grid), sides, settings);
-  double t = 0.0;
-  std::array<double, 30> at_25{};
-  bool sampled = false;
-  int steps = 0;
+  const io::Case the_case =
+      io::load_case(std::string(PARTIMIX_SOURCE_DIR) + "/cases/cfd_cavity.yaml",
+                    {"output.frames=false", "time.end=25"});
+  app::Simulation simulation = app::build_simulation(the_case);
+  const test_support::TempDir out("grid_cavity");
+  const test_support::CaseRun run = test_support::run_simulation(the_case, simulation, out.path());
+  ASSERT_EQ(run.summary.status, "completed");
+  auto& solver = dynamic_cast<CfdSolver&>(*simulation.methods[0].solver);
+  const FluidSolver& fluid = solver.fluid();
+  ASSERT_EQ(fluid.grid().cells(0), kCells);
+  const std::array<double, 30> at_25 = profiles(fluid);
+  double t = 25.0;
+  std::size_t steps = run.summary.steps;
   while (t < 30.0 - 1e-9) {
-    double dt = std::min(fluid.stable_dt(), 30.0 - t);
-    if (!sampled && t + dt > 25.0)
-      dt = 25.0 - t;
-    ASSERT_TRUE(fluid.step(dt).converged);
+    const double dt = std::min(solver.stable_dt(), 30.0 - t);
+    solver.step(dt);
     t += dt;
     ++steps;
-    if (!sampled && std::abs(t - 25.0) < 1e-9) {
-      at_25 = profiles(fluid);
-      sampled = true;
-    }
   }
   const std::array<double, 30> last = profiles(fluid);
   double largest = 0.0;
@@ -92,7 +91,7 @@ TEST(GridCavity, CentreLineVelocitiesFollowGhiaAtRe100) {
     drift = std::max(drift, std::abs(last[k] - at_25[k]));
   }
   const double rms = std::sqrt(squares / 30.0);
-  std::printf("grid cavity Re 100, %d steps: largest %.4f U, rms %.4f U, change 25-30 s %.2e U\n",
+  std::printf("grid cavity Re 100, %zu steps: largest %.4f U, rms %.4f U, change 25-30 s %.2e U\n",
               steps, largest, rms, drift);
   EXPECT_LT(drift, 1e-3);
   EXPECT_LT(largest, 0.03);

@@ -1,0 +1,17 @@
+#pragma once
+// The cells of a grid fluid that walls block (docs/cfd.md, "Walls: blocked cells"): a cell is
+// blocked when its centre lies on or behind the surface of a wall (the staircase
+// representation); the faces' flags follow from the cells' (cfd/flow_mask.hpp).
+#include <memory>
+#include <span>
+
+#include "cfd/flow_mask.hpp"
+#include "geometry/surface.hpp"
+#include "grid/staggered_grid.hpp"
+
+namespace partimix::cfd {
+
+FlowMask blocked_by_walls(const grid::StaggeredGrid& grid,
+                          std::span<const std::shared_ptr<const geometry::Surface>> walls);
+
+}  // namespace partimix::cfd

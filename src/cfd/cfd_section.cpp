@@ -1,0 +1,105 @@
+#include "cfd/cfd_section.hpp"
+
+#include <fmt/format.h>
+
+#include "io/axis_names.hpp"
+#include "io/method_type.hpp"
+#include "io/rheology_section.hpp"
+
+namespace partimix::cfd {
+namespace {
+
+using io::at_least;
+using io::kPositive;
+using io::Reader;
+
+void read_fluid(Reader& root, CfdConfig& config) {
+  Reader fluid = root.map("fluid");
+  config.settings.density = fluid.required<double>("density", kPositive);
+  config.rheology = io::read_fluid_rheology(fluid);
+  if (config.rheology.model != "newtonian") {
+    throw fluid.error("rheology", fmt::format("the cfd method takes a Newtonian fluid so far, not "
+                                              "'{}' (docs/cfd.md, \"Status\")",
+                                              config.rheology.model));
+  }
+  config.settings.viscosity = config.rheology.viscosity;
+  if (!(config.settings.viscosity > 0.0))
+    throw fluid.error("viscosity", "the cfd method needs a viscosity above zero");
+  fluid.done();
+}
+
+void read_numerics(Reader& section, FluidSettings& settings) {
+  settings.convection = section.choice("convection", "tvd", {"tvd", "upwind"}) == "tvd"
+                            ? ConvectionScheme::tvd
+                            : ConvectionScheme::upwind;
+  settings.cfl = section.optional<double>("cfl", settings.cfl, kPositive);
+  if (settings.cfl > 1.0)
+    throw section.error("cfl", "must lie in (0, 1]");
+  settings.max_dt = section.optional<double>("max_dt", settings.max_dt, kPositive);
+  settings.pressure_tolerance =
+      section.optional<double>("pressure_tolerance", settings.pressure_tolerance, kPositive);
+  settings.momentum_tolerance =
+      section.optional<double>("momentum_tolerance", settings.momentum_tolerance, kPositive);
+  settings.max_iterations =
+      section.optional<int>("max_iterations", settings.max_iterations, at_least(1));
+}
+
+// `sides: {"y+": {wall: no_slip, velocity: [1, 0]}, "x-": {wall: slip}}`; the others no-slip at
+// rest. A side's velocity lies in its plane (no flow through a side yet).
+void read_sides(Reader& section, const Domain& domain, BoxSides& sides) {
+  Reader map = section.optional_map("sides");
+  for (const std::string& axis_name : io::axis_names(domain.dimensions)) {
+    const int axis = io::axis_index(axis_name);
+    for (const char sign : {'-', '+'}) {
+      const std::string key = axis_name + sign;
+      if (!map.contains(key))
+        continue;
+      if (domain.periodic[axis])
+        throw map.error(
+            key, fmt::format("the domain is periodic along {}: it has no sides there", axis_name));
+      Reader side = map.map(key);
+      BoxSide& target = sides[static_cast<std::size_t>(2 * axis + (sign == '+' ? 1 : 0))];
+      target.slip = side.choice("wall", "no_slip", {"no_slip", "slip"}) == "slip";
+      target.velocity = side.vector("velocity", domain.dimensions, Vec3::Zero());
+      if (target.velocity[axis] != 0.0)
+        throw side.error("velocity", fmt::format("must lie in the side's plane (its {} component "
+                                                 "zero): no flow through a side yet",
+                                                 axis_name));
+      if (target.slip && target.velocity.norm() > 0.0)
+        throw side.error("velocity", "a slip side does not move the fluid; remove 'velocity'");
+      side.done();
+    }
+  }
+  map.done();
+}
+
+void read_walls(const io::Case& the_case, CfdConfig& config) {
+  for (std::size_t w = 0; w < the_case.walls.size(); ++w) {
+    const io::WallSpec& wall = the_case.walls[w];
+    if (wall.motion.type != "fixed") {
+      throw io::case_error(the_case, fmt::format("walls[{}].motion", w),
+                           "the cfd method blocks cells of fixed walls only so far (docs/cfd.md, "
+                           "\"Status\")");
+    }
+    config.walls.push_back(wall.surface);
+  }
+}
+
+}  // namespace
+
+std::shared_ptr<CfdSection> read_cfd_section(Reader& root, const io::Case& the_case) {
+  auto spec = std::make_shared<CfdSection>();
+  CfdConfig& config = spec->config;
+  read_fluid(root, config);
+  Reader section = root.map("cfd");
+  config.cell_size = section.required<double>("cell_size", kPositive);
+  read_numerics(section, config.settings);
+  read_sides(section, the_case.domain, config.sides);
+  config.settings.gravity = the_case.gravity;
+  config.max_cells = the_case.limits.grid_nodes;
+  read_walls(the_case, config);
+  section.done();
+  return spec;
+}
+
+}  // namespace partimix::cfd

@@ -1,0 +1,176 @@
+#include "cfd/cfd_solver.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "cfd/blocked_cells.hpp"
+#include "core/error.hpp"
+#include "particles/store_state.hpp"
+
+namespace partimix::cfd {
+namespace {
+
+const InputLocation kCellSize{"", 0, 0, "cfd.cell_size"};
+
+}  // namespace
+
+// The domain's box with the whole count of cells nearest to its length over cfd.cell_size along
+// each axis; in 2D one cell of unit depth centred on z = 0.
+grid::StaggeredGrid CfdSolver::make_grid(const Domain& domain, const CfdConfig& config) {
+  std::array<int, 3> cells{1, 1, 1};
+  Vec3 spacing = Vec3::Ones();
+  Vec3 origin = domain.lo;
+  for (int axis = 0; axis < domain.dimensions; ++axis) {
+    const double length = domain.hi[axis] - domain.lo[axis];
+    const double count = std::max(1.0, std::round(length / config.cell_size));
+    if (!(count <= config.max_cells))
+      throw InputError(kCellSize, fmt::format("makes {:.3g} cells along one axis, more than "
+                                              "limits.grid_nodes = {:.3g}",
+                                              count, config.max_cells));
+    cells[axis] = static_cast<int>(count);
+    spacing[axis] = length / count;
+  }
+  if (domain.dimensions == 2)
+    origin[2] = -0.5;
+  try {
+    return grid::StaggeredGrid(domain.dimensions, origin, cells, spacing, domain.periodic,
+                               config.max_cells);
+  } catch (const InputError& error) {
+    throw InputError(kCellSize, error.message());
+  }
+}
+
+CfdSolver::CfdSolver(ParticleStore& store, const Domain& domain, const CfdConfig& config)
+    : store_(store), domain_(domain), config_(config) {
+  const grid::StaggeredGrid grid = make_grid(domain, config);
+  const FlowMask mask = blocked_by_walls(grid, config.walls);
+  fluid_ = std::make_unique<FluidSolver>(grid, mask, config.sides, config.settings);
+  lay_out_cells();
+  update_cells();
+}
+
+void CfdSolver::lay_out_cells() {
+  const grid::StaggeredGrid& grid = fluid_->grid();
+  const FlowMask& mask = fluid_->mask();
+  for (std::size_t c = 0; c < grid.cell_count(); ++c)
+    if (mask.open_cell[c])
+      open_cells_.push_back(c);
+  if (open_cells_.empty())
+    throw InputError(kCellSize, "the walls block every cell of the grid");
+  store_.resize(open_cells_.size());
+  for (std::size_t p = 0; p < open_cells_.size(); ++p) {
+    const auto [i, j, k] = grid.cell_coordinates(open_cells_[p]);
+    store_.id()[p] = static_cast<std::int64_t>(open_cells_[p]);
+    store_.kind()[p] = static_cast<std::int32_t>(ParticleKind::fluid);
+    Vec3 x = grid.cell_centre(i, j, k);
+    if (grid.dimensions() == 2)
+      x[2] = 0.0;
+    store_.position()[p] = x;
+  }
+  frame_ = GridFrame{grid.dimensions(), grid.origin(), Vec3::Zero(), {}, {}};
+  for (int axis = 0; axis < 3; ++axis) {
+    frame_.cells[axis] = grid.cells(axis);
+    frame_.spacing[axis] = grid.spacing(axis);
+  }
+  frame_open_.assign(grid.cell_count(), 0.0);
+  for (const std::size_t c : open_cells_)
+    frame_open_[c] = 1.0;
+}
+
+// The particles' velocity and mass from the fluid: ρ ε V with ε = 1 so far.
+void CfdSolver::update_cells() {
+  const grid::StaggeredGrid& grid = fluid_->grid();
+  const double mass = config_.settings.density * grid.cell_volume();
+  for (std::size_t p = 0; p < open_cells_.size(); ++p) {
+    const auto [i, j, k] = grid.cell_coordinates(open_cells_[p]);
+    store_.velocity()[p] = fluid_->cell_velocity(i, j, k);
+    store_.mass()[p] = mass;
+  }
+}
+
+void CfdSolver::step(double dt) {
+  const LinearSolve pressure = fluid_->step(dt);
+  const LinearSolve& momentum = fluid_->momentum_solve();
+  for (const auto& [solve, what] : {std::pair{pressure, "the pressure correction"},
+                                    std::pair{momentum, "the momentum predictor"}}) {
+    if (!solve.converged)
+      throw RunError(fmt::format(
+          "{} did not converge at t = {:.6g} s: relative residual {:.3g} after {} iterations "
+          "(cfd.pressure_tolerance {:.3g}, cfd.momentum_tolerance {:.3g}, cfd.max_iterations {})",
+          what, time_, solve.residual, solve.iterations, config_.settings.pressure_tolerance,
+          config_.settings.momentum_tolerance, config_.settings.max_iterations));
+  }
+  time_ += dt;
+  ++steps_;
+  update_cells();
+}
+
+std::map<std::string, double> CfdSolver::derived_parameters() const {
+  const grid::StaggeredGrid& grid = fluid_->grid();
+  std::map<std::string, double> parameters{
+      {"cells [-]", static_cast<double>(grid.cell_count())},
+      {"open cells [-]", static_cast<double>(open_cells_.size())},
+      {"kinematic viscosity [m^2/s]", config_.settings.viscosity / config_.settings.density}};
+  const char* names[] = {"x", "y", "z"};
+  for (int axis = 0; axis < grid.dimensions(); ++axis)
+    parameters[fmt::format("cell size {} [m]", names[axis])] = grid.spacing(axis);
+  return parameters;
+}
+
+// Velocity (3 components) at the cell centres, pressure and the open flag, per cell.
+const GridFrame* CfdSolver::grid_frame() {
+  const grid::StaggeredGrid& grid = fluid_->grid();
+  frame_velocity_.assign(3 * grid.cell_count(), 0.0);
+  for (const std::size_t c : open_cells_) {
+    const auto [i, j, k] = grid.cell_coordinates(c);
+    const Vec3 u = fluid_->cell_velocity(i, j, k);
+    for (int a = 0; a < 3; ++a)
+      frame_velocity_[3 * c + static_cast<std::size_t>(a)] = u[a];
+  }
+  frame_.cell_arrays = {{"velocity", 3, frame_velocity_},
+                        {"pressure", 1, fluid_->pressure()},
+                        {"open", 1, frame_open_}};
+  return &frame_;
+}
+
+void CfdSolver::save(StateArchive& archive, const std::string& prefix) const {
+  save_store(store_, archive, prefix);
+  const FaceArrays& velocity = fluid_->velocity();
+  for (int axis = 0; axis < 3; ++axis)
+    archive.put_doubles(fmt::format("{}velocity_{}", prefix, axis), velocity[axis]);
+  archive.put_doubles(prefix + "pressure", fluid_->pressure());
+  archive.put_doubles(prefix + "correction", fluid_->last_correction());
+  archive.put_scalar(prefix + "time", time_);
+  archive.put_integers(prefix + "steps", std::vector<std::int64_t>{steps_});
+}
+
+namespace {
+
+std::vector<double> sized(const StateArchive& archive, const std::string& path, std::size_t size) {
+  const std::span<const double> values = archive.doubles(path);
+  if (values.size() != size)
+    throw StateError(fmt::format("{}: {} values, the grid has {}", path, values.size(), size));
+  return {values.begin(), values.end()};
+}
+
+}  // namespace
+
+void CfdSolver::restore(const StateArchive& archive, const std::string& prefix) {
+  restore_store(store_, archive, prefix, false);
+  const grid::StaggeredGrid& grid = fluid_->grid();
+  FaceArrays velocity;
+  for (int axis = 0; axis < 3; ++axis)
+    velocity[static_cast<std::size_t>(axis)] =
+        sized(archive, fmt::format("{}velocity_{}", prefix, axis), grid.face_count(axis));
+  const std::vector<double> pressure = sized(archive, prefix + "pressure", grid.cell_count());
+  std::vector<double> correction = sized(archive, prefix + "correction", grid.cell_count());
+  fluid_->restore(velocity, pressure, correction);
+  time_ = archive.scalar(prefix + "time");
+  const auto steps = archive.integers(prefix + "steps");
+  if (steps.size() != 1)
+    throw StateError(prefix + "steps: the wrong size");
+  steps_ = steps[0];
+}
+
+}  // namespace partimix::cfd

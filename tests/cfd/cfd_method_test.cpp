@@ -1,0 +1,148 @@
+// The grid fluid as a method of a run (docs/cfd.md; docs/case-reference.md, "cfd"): built from a
+// case, its cells blocked by the shared walls, its frames the grid's cells (.vti) in cfd.pvd, its
+// particles the open cells carrying the fluid's mass, resumed bit for bit from a checkpoint, and
+// its case errors naming the key.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include "app/simulation.hpp"
+#include "core/error.hpp"
+#include "io/checkpoint_folder.hpp"
+#include "support/case_run.hpp"
+
+namespace partimix::cfd {
+namespace {
+
+using test_support::read_file;
+using test_support::TempDir;
+
+// A 2D cavity, 1 x 1 m of 16 x 16 cells, its lid moving at 1 m/s, Re = 100.
+std::string cavity(const std::string& end, const std::string& extra = "") {
+  return R"(solver: cfd
+dimensions: 2
+domain: {min: [0, 0], max: [1, 1]}
+time: {end: )" +
+         end + R"(, output_interval: 0.5, sample_interval: 0.1, checkpoint_interval: 0.5}
+fluid: {density: 1, viscosity: 0.01}
+cfd:
+  cell_size: 0.0625
+  max_dt: 0.05
+  sides: {y+: {velocity: [1, 0]}}
+)" + extra;
+}
+
+test_support::CaseRun run(const io::Case& the_case, const std::filesystem::path& out,
+                          const StateArchive* checkpoint = nullptr) {
+  app::Simulation simulation = app::build_simulation(the_case, {checkpoint != nullptr});
+  return test_support::run_simulation(the_case, simulation, out, checkpoint);
+}
+
+TEST(CfdMethod, CavityRunsAndWritesGridFrames) {
+  const TempDir dir;
+  const io::Case the_case = test_support::load_case_text(dir, cavity("1.0"));
+  app::Simulation simulation = app::build_simulation(the_case);
+  ASSERT_EQ(test_support::run_simulation(the_case, simulation, dir / "out").summary.status,
+            "completed");
+  for (int k = 0; k <= 2; ++k)
+    EXPECT_TRUE(std::filesystem::exists(dir / "out" / "frames" /
+                                        ("cfd_00000" + std::to_string(k) + ".vti")));
+  const std::string collection = read_file(dir / "out" / "cfd.pvd");
+  EXPECT_NE(collection.find("frames/cfd_000002.vti"), std::string::npos);
+  // The lid drags the fluid: the largest cell speed lies between 0 and U (the cell centres
+  // nearest the lid are half a cell below it).
+  double fastest = 0.0;
+  for (const Vec3& u : simulation.methods[0].store->velocity())
+    fastest = std::max(fastest, u.norm());
+  EXPECT_GT(fastest, 0.3);
+  EXPECT_LT(fastest, 1.0);
+}
+
+// Every open cell is one particle carrying the cell's fluid mass: the store's total mass is
+// ρ times the open area, and the walls block the cells whose centres lie on or behind them.
+TEST(CfdMethod, WallsBlockCellsAndTheParticlesCarryTheFluidMass) {
+  const TempDir dir;
+  const std::string walls = R"(walls:
+  - {shape: box, min: [0.2, 0.2], max: [0.8, 0.8]}
+  - {shape: box, min: [0.45, 0.45], max: [0.55, 0.55], solid: true}
+)";
+  std::string text = cavity("0.1", walls);
+  text.replace(text.find("0.0625"), 6, "0.1");
+  const io::Case the_case = test_support::load_case_text(dir, text);
+  const app::Simulation simulation = app::build_simulation(the_case);
+  const ParticleStore& cells = *simulation.methods[0].store;
+  // Centres 0.05 ... 0.95: 0.25 ... 0.75 lie inside the container (6 x 6), of which 0.45 and
+  // 0.55 (2 x 2) inside the solid.
+  ASSERT_EQ(cells.size(), 32U);
+  double mass = 0.0;
+  for (std::size_t p = 0; p < cells.size(); ++p) {
+    mass += cells.mass()[p];
+    const Vec3& x = cells.position()[p];
+    EXPECT_TRUE(x.x() > 0.2 && x.x() < 0.8 && x.y() > 0.2 && x.y() < 0.8) << p;
+    EXPECT_FALSE(std::abs(x.x() - 0.5) < 0.1 && std::abs(x.y() - 0.5) < 0.1) << p;
+    EXPECT_EQ(x.z(), 0.0);
+  }
+  EXPECT_NEAR(mass, 1.0 * 32 * 0.01, 1e-15);
+}
+
+TEST(CfdMethod, TheSecondHalfFromACheckpointIsTheRunThatWentThrough) {
+  const TempDir dir;
+  const io::Case whole = test_support::load_case_text(dir, cavity("2.0"));
+  const test_support::CaseRun through = run(whole, dir / "whole");
+  ASSERT_EQ(through.summary.status, "completed");
+  const io::Case half = test_support::load_case_text(dir, cavity("1.2"));
+  ASSERT_EQ(run(half, dir / "parts").summary.status, "completed");
+  const StateArchive checkpoint = io::CheckpointFolder(dir / "parts" / "checkpoints").read_latest();
+  ASSERT_EQ(run(whole, dir / "parts", &checkpoint).summary.status, "completed");
+  EXPECT_EQ(read_file(dir / "whole" / "series.csv"), read_file(dir / "parts" / "series.csv"));
+  EXPECT_EQ(read_file(dir / "whole" / "cfd.pvd"), read_file(dir / "parts" / "cfd.pvd"));
+  for (int k = 0; k <= 4; ++k) {
+    const auto frame = std::filesystem::path("frames") / ("cfd_00000" + std::to_string(k) + ".vti");
+    EXPECT_TRUE(read_file(dir / "whole" / frame) == read_file(dir / "parts" / frame)) << frame;
+  }
+}
+
+std::string key_of_error(const std::string& text) {
+  const TempDir dir;
+  try {
+    test_support::load_case_text(dir, text);
+  } catch (const InputError& error) {
+    return error.location().key_path;
+  }
+  return "no error";
+}
+
+TEST(CfdMethod, CaseErrorsNameTheirKey) {
+  std::string power_law = cavity("1.0");
+  power_law.replace(
+      power_law.find("viscosity: 0.01"), 15,
+      "rheology: {model: power_law, consistency: 1, flow_index: 0.5, viscosity_max: 10}");
+  EXPECT_EQ(key_of_error(power_law), "fluid.rheology");
+  std::string through_side = cavity("1.0");
+  through_side.replace(through_side.find("[1, 0]"), 6, "[1, 1]");
+  EXPECT_EQ(key_of_error(through_side), "cfd.sides.y+.velocity");
+  EXPECT_EQ(key_of_error(cavity("1.0",
+                                "walls:\n  - {shape: box, min: [0.2, 0.2], max: [0.8, "
+                                "0.8], motion: {type: rotation, rpm: 10}}\n")),
+            "walls[0].motion");
+  std::string periodic = cavity("1.0");
+  periodic.replace(periodic.find("max: [1, 1]}"), 12, "max: [1, 1], periodic: [y]}");
+  EXPECT_EQ(key_of_error(periodic), "cfd.sides.y+");
+  std::string huge = cavity("1.0", "limits: {grid_nodes: 100}\n");
+  EXPECT_EQ(key_of_error(huge), "no error");  // the grid is made when the case is built
+  const TempDir dir;
+  const io::Case the_case = test_support::load_case_text(dir, huge);
+  try {
+    app::build_simulation(the_case);
+    ADD_FAILURE() << "a grid of 256 cells built under limits.grid_nodes = 100";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.location().key_path, "cfd.cell_size");
+    EXPECT_GT(error.location().line, 0);
+  }
+}
+
+}  // namespace
+}  // namespace partimix::cfd
