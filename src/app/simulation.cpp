@@ -1,5 +1,7 @@
 #include "app/simulation.hpp"
 
+#include "io/coupling_type.hpp"
+
 namespace partimix::app {
 
 std::size_t Simulation::particle_count() const {
@@ -11,12 +13,12 @@ std::size_t Simulation::particle_count() const {
 
 namespace {
 
-// A method's instance; an error that names a key but no file (from a layer below the case, e.g.
-// the cell grid) is given the key's place in the case file.
-io::MethodInstance build_method(const io::Case& the_case, const io::MethodSpec& spec,
-                                const io::BuildOptions& options) {
+// What `build` returns; an error that names a key but no file (from a layer below the case,
+// e.g. the cell grid) is given the key's place in the case file.
+template <class Build>
+auto located(const io::Case& the_case, Build build) {
   try {
-    return io::method_registry().create(spec.name)->build(the_case, spec, options);
+    return build();
   } catch (const InputError& error) {
     if (!error.location().file.empty())
       throw;
@@ -29,10 +31,16 @@ io::MethodInstance build_method(const io::Case& the_case, const io::MethodSpec& 
 Simulation build_simulation(const io::Case& the_case, const io::BuildOptions& options) {
   Simulation simulation;
   for (const io::MethodSpec& spec : the_case.methods) {
-    simulation.methods.push_back(build_method(the_case, spec, options));
+    simulation.methods.push_back(located(the_case, [&] {
+      return io::method_registry().create(spec.name)->build(the_case, spec, options);
+    }));
     auto& warnings = simulation.methods.back().warnings;
     simulation.warnings.insert(simulation.warnings.end(), warnings.begin(), warnings.end());
   }
+  for (const io::CouplingSpec& spec : the_case.couplings)
+    simulation.couplings.push_back(located(the_case, [&] {
+      return io::coupling_registry().create(spec.type)->build(the_case, spec, simulation.methods);
+    }));
   return simulation;
 }
 

@@ -78,14 +78,15 @@ void CfdSolver::lay_out_cells() {
     frame_open_[c] = 1.0;
 }
 
-// The particles' velocity and mass from the fluid: ρ ε V with ε = 1 so far.
+// The particles' velocity and mass from the fluid: ρ ε V.
 void CfdSolver::update_cells() {
   const grid::StaggeredGrid& grid = fluid_->grid();
   const double mass = config_.settings.density * grid.cell_volume();
+  const std::vector<double>& eps = fluid_->void_fraction();
   for (std::size_t p = 0; p < open_cells_.size(); ++p) {
     const auto [i, j, k] = grid.cell_coordinates(open_cells_[p]);
     store_.velocity()[p] = fluid_->cell_velocity(i, j, k);
-    store_.mass()[p] = mass;
+    store_.mass()[p] = mass * eps[open_cells_[p]];
   }
 }
 
@@ -118,7 +119,8 @@ std::map<std::string, double> CfdSolver::derived_parameters() const {
   return parameters;
 }
 
-// Velocity (3 components) at the cell centres, pressure and the open flag, per cell.
+// Velocity (3 components) at the cell centres, pressure, void fraction and the open flag, per
+// cell.
 const GridFrame* CfdSolver::grid_frame() {
   const grid::StaggeredGrid& grid = fluid_->grid();
   frame_velocity_.assign(3 * grid.cell_count(), 0.0);
@@ -130,6 +132,7 @@ const GridFrame* CfdSolver::grid_frame() {
   }
   frame_.cell_arrays = {{"velocity", 3, frame_velocity_},
                         {"pressure", 1, fluid_->pressure()},
+                        {"void_fraction", 1, fluid_->void_fraction()},
                         {"open", 1, frame_open_}};
   return &frame_;
 }
@@ -141,6 +144,7 @@ void CfdSolver::save(StateArchive& archive, const std::string& prefix) const {
     archive.put_doubles(fmt::format("{}velocity_{}", prefix, axis), velocity[axis]);
   archive.put_doubles(prefix + "pressure", fluid_->pressure());
   archive.put_doubles(prefix + "correction", fluid_->last_correction());
+  archive.put_doubles(prefix + "void_fraction", fluid_->void_fraction());
   archive.put_scalar(prefix + "time", time_);
   archive.put_integers(prefix + "steps", std::vector<std::int64_t>{steps_});
 }
@@ -164,8 +168,9 @@ void CfdSolver::restore(const StateArchive& archive, const std::string& prefix) 
     velocity[static_cast<std::size_t>(axis)] =
         sized(archive, fmt::format("{}velocity_{}", prefix, axis), grid.face_count(axis));
   const std::vector<double> pressure = sized(archive, prefix + "pressure", grid.cell_count());
-  std::vector<double> correction = sized(archive, prefix + "correction", grid.cell_count());
-  fluid_->restore(velocity, pressure, correction);
+  const std::vector<double> correction = sized(archive, prefix + "correction", grid.cell_count());
+  const std::vector<double> eps = sized(archive, prefix + "void_fraction", grid.cell_count());
+  fluid_->restore(velocity, pressure, correction, eps);
   time_ = archive.scalar(prefix + "time");
   const auto steps = archive.integers(prefix + "steps");
   if (steps.size() != 1)

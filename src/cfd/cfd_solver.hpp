@@ -30,6 +30,8 @@ class CfdSolver final : public Solver {
   void restore(const StateArchive& archive, const std::string& prefix) override;
 
   const FluidSolver& fluid() const { return *fluid_; }
+  // For a coupling: the void fraction and the grains' drag of the next step.
+  FluidSolver& fluid() { return *fluid_; }
 
  private:
   static grid::StaggeredGrid make_grid(const Domain& domain, const CfdConfig& config);

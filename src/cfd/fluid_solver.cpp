@@ -16,8 +16,12 @@ FluidSolver::FluidSolver(const grid::StaggeredGrid& grid, const FlowMask& mask,
       velocity_(face_arrays(grid, 0.0)),
       pressure_(grid.cell_count(), 0.0),
       cell_void_fraction_(grid.cell_count(), 1.0),
+      old_cell_void_fraction_(grid.cell_count(), 1.0),
       cell_viscosity_(grid.cell_count(), settings.viscosity),
       void_fraction_(face_arrays(grid, 1.0)),
+      old_void_fraction_(face_arrays(grid, 1.0)),
+      drag_coefficient_(face_arrays(grid, 0.0)),
+      grain_source_(face_arrays(grid, 0.0)),
       convection_(face_arrays(grid, 0.0)),
       diagonal_(face_arrays(grid, 0.0)),
       rhs_(face_arrays(grid, 0.0)),
@@ -59,8 +63,32 @@ double FluidSolver::stable_dt() const {
   return dt;
 }
 
-// D_f = ρ ε_f / Δt, r_f = ρ ε_f u_f / Δt - C_f - ε_f (p_above - p_below) / h + ε_f ρ g, and the
-// projection's a_f = Δt / ρ.
+void FluidSolver::faces_from_cells(const std::vector<double>& cells, FaceArrays& faces) const {
+  for (int a = 0; a < grid_.dimensions(); ++a)
+    grid_.for_each_face(a, [&](const Coordinates& f, std::size_t index) {
+      if (!mask_.open_face[a][index])
+        return;
+      Coordinates below = f;
+      below[a] = grid_.wrap_cell(a, f[a] - 1);
+      const std::size_t above = cell_index(grid_, f);
+      faces[a][index] = 0.5 * (cells[cell_index(grid_, below)] + cells[above]);
+    });
+}
+
+void FluidSolver::set_void_fraction(std::span<const double> cells) {
+  std::swap(old_cell_void_fraction_, cell_void_fraction_);
+  std::swap(old_void_fraction_, void_fraction_);
+  std::copy(cells.begin(), cells.end(), cell_void_fraction_.begin());
+  faces_from_cells(cell_void_fraction_, void_fraction_);
+}
+
+void FluidSolver::start_void_fraction(std::span<const double> cells) {
+  set_void_fraction(cells);
+  set_void_fraction(cells);
+}
+
+// D_f = ρ ε_f^{n+1} / Δt + K_f, r_f = ρ ε_f^n u_f / Δt - C_f - ε_f^{n+1} (p_above - p_below) / h
+// + ε_f^{n+1} ρ g + S_e,f, and the projection's a_f = ε_f^{n+1} / D_f (Δt / ρ without grains).
 void FluidSolver::explicit_terms(double dt) {
   const double rho = settings_.density;
   for (int a = 0; a < grid_.dimensions(); ++a)
@@ -69,16 +97,19 @@ void FluidSolver::explicit_terms(double dt) {
         return;
       const double eps = void_fraction_[a][index];
       const double gradient = gradient_across(grid_, a, f, pressure_);
-      diagonal_[a][index] = rho * eps / dt;
-      rhs_[a][index] = rho * eps * velocity_[a][index] / dt - convection_[a][index] -
-                       eps * gradient + eps * rho * settings_.gravity[a];
-      coefficient_[a][index] = dt / rho;
+      diagonal_[a][index] = rho * eps / dt + drag_coefficient_[a][index];
+      rhs_[a][index] = rho * old_void_fraction_[a][index] * velocity_[a][index] / dt -
+                       convection_[a][index] - eps * gradient + eps * rho * settings_.gravity[a] +
+                       grain_source_[a][index];
+      coefficient_[a][index] = eps / diagonal_[a][index];
     });
+  for (std::size_t c = 0; c < source_.size(); ++c)
+    source_[c] = (cell_void_fraction_[c] - old_cell_void_fraction_[c]) / dt;
 }
 
 LinearSolve FluidSolver::step(double dt) {
-  convective_term(grid_, mask_, settings_.convection, settings_.density, void_fraction_, velocity_,
-                  convection_);
+  convective_term(grid_, mask_, settings_.convection, settings_.density, old_void_fraction_,
+                  velocity_, convection_);
   explicit_terms(dt);
   momentum_solve_ = predictor_.solve(grid_, sides_, cell_void_fraction_, cell_viscosity_, diagonal_,
                                      rhs_, velocity_);
@@ -90,7 +121,9 @@ LinearSolve FluidSolver::step(double dt) {
 }
 
 void FluidSolver::restore(const FaceArrays& velocity, const std::vector<double>& pressure,
-                          const std::vector<double>& correction) {
+                          const std::vector<double>& correction,
+                          const std::vector<double>& void_fraction) {
+  start_void_fraction(void_fraction);
   velocity_ = velocity;
   pressure_ = pressure;
   correction_ = correction;

@@ -1,10 +1,12 @@
 #pragma once
 // A grid fluid's time step (docs/cfd.md, "One time step", the projection): the explicit
-// convection (cfd/convection.hpp), the momentum predictor with implicit viscosity
-// (cfd/momentum_predictor.hpp), and the pressure correction (cfd/pressure_projection.hpp). The
-// fluid is Newtonian and fills its cells (ε = 1); with ε η constant the viscous term's transpose
-// part ∇·(ε η ∇uᵀ) = ε η ∇(∇·u) vanishes with the divergence and is left out; grains (ε < 1, the
-// drag) and the non-Newtonian viscosity bring it in (docs/cfd-dem.md).
+// convection (cfd/convection.hpp), the momentum predictor with implicit viscosity and the grains'
+// implicit drag (cfd/momentum_predictor.hpp), and the pressure correction
+// (cfd/pressure_projection.hpp), with the void fraction ε of the grains (1 without them) and the
+// continuity source (ε^{n+1} - ε^n) / Δt. The fluid is Newtonian. The viscous term's transpose
+// part ∇·(ε η ∇uᵀ) is left out: it vanishes where ε η is constant (by continuity), and is of the
+// order of the gradient of ε times the viscous stress elsewhere (docs/cfd.md, "Status").
+#include <span>
 #include <vector>
 
 #include "cfd/box_sides.hpp"
@@ -49,12 +51,29 @@ class FluidSolver {
   const std::vector<double>& last_correction() const { return correction_; }
   // The state a step reads, from a checkpoint: the face velocities, p and the last φ.
   void restore(const FaceArrays& velocity, const std::vector<double>& pressure,
-               const std::vector<double>& correction);
+               const std::vector<double>& correction, const std::vector<double>& void_fraction);
+  // The grains' void fraction per cell for the next step, ε^{n+1}; the present one becomes ε^n.
+  void set_void_fraction(std::span<const double> cells);
+  // The same, with no change over the first step (a run's start): ε^n = ε^{n+1}.
+  void start_void_fraction(std::span<const double> cells);
+  const std::vector<double>& void_fraction() const { return cell_void_fraction_; }
+  // ε on the faces: the mean of the cells on the face's two sides (open faces only).
+  const FaceArrays& face_void_fraction() const { return void_fraction_; }
+  // The grains' drag on the fluid for the next step, S_e - K_f u*, per unit volume on each open
+  // face (docs/cfd-dem.md, "The source S_p"): K_f [kg/(m³ s)] and S_e [N/m³], written by the
+  // coupling, zero without grains.
+  FaceArrays& drag_coefficient() { return drag_coefficient_; }
+  FaceArrays& grain_source() { return grain_source_; }
+  const FaceArrays& drag_coefficient() const { return drag_coefficient_; }
+  const FaceArrays& grain_source() const { return grain_source_; }
+  const FluidSettings& settings() const { return settings_; }
+
   // The mean of the faces on the cell's two sides along each axis.
   Vec3 cell_velocity(int i, int j, int k) const;
 
  private:
   void set_side_faces();
+  void faces_from_cells(const std::vector<double>& cells, FaceArrays& faces) const;
   void explicit_terms(double dt);
 
   grid::StaggeredGrid grid_;
@@ -63,9 +82,13 @@ class FluidSolver {
   FluidSettings settings_;
   FaceArrays velocity_;
   std::vector<double> pressure_;
-  std::vector<double> cell_void_fraction_;
+  std::vector<double> cell_void_fraction_;      // ε^{n+1}
+  std::vector<double> old_cell_void_fraction_;  // ε^n
   std::vector<double> cell_viscosity_;
-  FaceArrays void_fraction_;
+  FaceArrays void_fraction_;      // ε_f^{n+1}
+  FaceArrays old_void_fraction_;  // ε_f^n
+  FaceArrays drag_coefficient_;
+  FaceArrays grain_source_;
   FaceArrays convection_;
   FaceArrays diagonal_;
   FaceArrays rhs_;

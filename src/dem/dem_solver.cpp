@@ -220,6 +220,15 @@ void DemSolver::step(double dt) {
     half_kick(i, dt, true);
 }
 
+ExternalForces DemSolver::enable_external_forces() {
+  if (!external_.force) {
+    external_.force = &store_.add_vector("external_force", "N", false).values;
+    external_.drag = &store_.add_scalar("external_drag", "kg/s", false).values;
+    external_.impulse = &store_.add_vector("external_impulse", "N s", false).values;
+  }
+  return external_;
+}
+
 // The first half kick and the drift, in one pass over the grains.
 void DemSolver::kick_and_drift(double dt) {
 #pragma omp parallel for schedule(static) if (parallel(store_.size()))
@@ -231,7 +240,14 @@ void DemSolver::kick_and_drift(double dt) {
 
 void DemSolver::half_kick(std::size_t i, double dt, bool superquadric_spins) {
   const double m = store_.mass()[i];
-  store_.velocity()[i] += 0.5 * dt * ((*force_)[i] / m + gravity_);
+  Vec3& v = store_.velocity()[i];
+  Vec3 load = (*force_)[i];
+  if (external_.force) {
+    const Vec3 external = (*external_.force)[i] - (*external_.drag)[i] * v;
+    (*external_.impulse)[i] += 0.5 * dt * external;
+    load += external;
+  }
+  v += 0.5 * dt * (load / m + gravity_);
   if (const auto& rotor = rotors_[(*species_)[i]]) {
     kick_angular_momentum((*angular_momentum_)[i], (*torque_)[i], dt);
     if (superquadric_spins)  // the orientation of this step's frames (update_frames)

@@ -15,6 +15,7 @@
 #include "dem/config.hpp"
 #include "dem/contact_history.hpp"
 #include "dem/ellipsoid_contact.hpp"
+#include "dem/external_forces.hpp"
 #include "dem/grain_glyphs.hpp"
 #include "dem/normal_contact.hpp"
 #include "dem/pair_list.hpp"
@@ -48,6 +49,11 @@ class DemSolver final : public Solver {
   // With superquadric species, the grains' glyph arrays for ParaView (dem/grain_glyphs.hpp);
   // none for spheres only.
   std::vector<FrameArray> frame_arrays() override;
+
+  // Adds the fields of the external forces (dem/external_forces.hpp), zero, and applies them
+  // from the next step on; returns them for the caller to set and read. Call at set-up, before
+  // a restore.
+  ExternalForces enable_external_forces();
 
   // While frozen the walls stay where their motions put them at t = 0 (settling).
   void freeze_walls(bool frozen) { walls_frozen_ = frozen; }
@@ -164,6 +170,7 @@ class DemSolver final : public Solver {
   std::vector<Vec3>* angular_velocity_ = nullptr;
   std::vector<Vec3>* force_ = nullptr;
   std::vector<Vec3>* torque_ = nullptr;
+  ExternalForces external_;  // null fields: none
   std::vector<double>* orientation_w_ = nullptr;
   std::vector<Vec3>* orientation_v_ = nullptr;
   // Per species: its shape (null: spheres) and the rotor of its principal moments.

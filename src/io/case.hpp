@@ -125,6 +125,21 @@ struct MethodSpec {
   int sub_steps = 1;
 };
 
+// What a coupling read from its item of `couplings` (io/coupling_type.hpp). Each coupling
+// derives its own type.
+class CouplingSection {
+ public:
+  virtual ~CouplingSection() = default;
+};
+
+// One coupling of the case: its type in the coupling registry, where it was written
+// ("couplings[k]") and what it read.
+struct CouplingSpec {
+  std::string type;
+  std::string key;
+  std::shared_ptr<CouplingSection> section;
+};
+
 struct Case {
   std::string file;  // path of the case file as given
   std::string name;
@@ -137,6 +152,7 @@ struct Case {
   std::vector<WallSpec> walls;
   OutputSpec output;
   std::vector<AnalysisSpec> analyses;
+  std::vector<CouplingSpec> couplings;  // from `couplings`, in its order
   nlohmann::json resolved;  // every key with the value used, defaults and --set included
   std::map<std::string, InputLocation> key_locations;  // where each key read was written
 

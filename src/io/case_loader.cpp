@@ -9,6 +9,7 @@
 #include "io/analysis_section.hpp"
 #include "io/axis_names.hpp"
 #include "io/case.hpp"
+#include "io/coupling_type.hpp"
 #include "io/method_type.hpp"
 #include "io/overrides.hpp"
 #include "io/shape_section.hpp"
@@ -120,6 +121,20 @@ void read_method_sections(Reader& root, Case& the_case) {
     method.section = method_registry().create(method.name)->read(root, the_case);
 }
 
+// The couplings, each read by its type after the methods' sections.
+void read_couplings(Reader& root, Case& the_case) {
+  std::vector<Reader> items = root.optional_list("couplings");
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    Reader& item = items[k];
+    CouplingSpec spec;
+    spec.type = item.required_choice("type", coupling_registry().names());
+    spec.key = fmt::format("couplings[{}]", k);
+    spec.section = coupling_registry().create(spec.type)->read(item, the_case);
+    item.done();
+    the_case.couplings.push_back(std::move(spec));
+  }
+}
+
 Case read_case(Reader& root, const std::string& path) {
   Case result;
   result.file = path;
@@ -134,6 +149,7 @@ Case read_case(Reader& root, const std::string& path) {
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
   result.walls = read_walls(root, dimensions, folder);
   read_method_sections(root, result);
+  read_couplings(root, result);
   result.output = read_output(root);
   result.analyses = read_analyses(root, result);
   root.done();

@@ -1,0 +1,58 @@
+#include "coupling/cfd_dem_type.hpp"
+
+#include <fmt/format.h>
+
+#include "cfd/cfd_solver.hpp"
+#include "coupling/cfd_dem_coupling.hpp"
+#include "coupling/drag_law.hpp"
+#include "dem/dem_solver.hpp"
+
+namespace partimix::coupling {
+namespace {
+
+std::size_t method_index(const io::Case& the_case, const std::string& name) {
+  for (std::size_t m = 0; m < the_case.methods.size(); ++m)
+    if (the_case.methods[m].name == name)
+      return m;
+  throw std::logic_error("the case runs no method " + name);
+}
+
+}  // namespace
+
+std::shared_ptr<io::CouplingSection> CfdDemType::read(io::Reader& item,
+                                                      const io::Case& the_case) const {
+  const io::MethodSpec* fluid = the_case.method("cfd");
+  const io::MethodSpec* grains = the_case.method("dem");
+  if (fluid == nullptr || grains == nullptr)
+    throw item.error("type", "cfd_dem couples the methods cfd and dem: name both in `solver`");
+  if (fluid->sub_steps != 1)
+    throw io::case_error(the_case, "time.sub_steps.cfd",
+                         "with a cfd_dem coupling the fluid takes one step per step of the run "
+                         "(the grains sub-cycle: time.sub_steps.dem)");
+  auto section = std::make_shared<CfdDemSection>();
+  CfdDemSettings& s = section->settings;
+  s.drag = item.choice("drag", s.drag, drag_law_registry().names());
+  const std::string pressure =
+      item.choice("pressure_force", "gradient", {"gradient", "buoyancy", "none"});
+  s.pressure_force = pressure == "gradient"   ? PressureForce::gradient
+                     : pressure == "buoyancy" ? PressureForce::buoyancy
+                                              : PressureForce::none;
+  s.kernel_radius = item.automatic<double>("kernel_radius", io::kPositive);
+  s.min_void_fraction =
+      item.optional<double>("min_void_fraction", s.min_void_fraction, io::kPositive);
+  if (!(s.min_void_fraction < 1.0))
+    throw item.error("min_void_fraction", "must lie in (0, 1)");
+  s.two_way = item.optional<bool>("two_way", s.two_way);
+  s.grain_sub_steps = grains->sub_steps;
+  return section;
+}
+
+std::unique_ptr<Coupling> CfdDemType::build(const io::Case& the_case, const io::CouplingSpec& spec,
+                                            std::span<io::MethodInstance> methods) const {
+  const CfdDemSettings& settings = dynamic_cast<const CfdDemSection&>(*spec.section).settings;
+  auto& fluid = dynamic_cast<cfd::CfdSolver&>(*methods[method_index(the_case, "cfd")].solver);
+  auto& grains = dynamic_cast<dem::DemSolver&>(*methods[method_index(the_case, "dem")].solver);
+  return std::make_unique<CfdDemCoupling>(fluid, grains, settings, the_case.gravity);
+}
+
+}  // namespace partimix::coupling

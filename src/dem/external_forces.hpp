@@ -1,0 +1,25 @@
+#pragma once
+// Forces on the grains from outside the DEM, held between the moments another method sets them
+// (a coupled fluid; docs/cfd-dem.md, "One coupled step and the sub-cycles"): on grain i
+//
+//     f_i = F_i - K_i v_i,
+//
+// F_i [N] held, K_i [kg/s] a linear drag coefficient on the grain's velocity, applied at every
+// half kick of the velocity Verlet step with the velocity of that moment (explicit: stable for
+// Δt K_i / m_i < 2). The impulse f_i Δt / 2 of each half kick is summed into J_i [N s], so that
+// whoever set the forces knows exactly the momentum the grains received. Three fields of the
+// store (not written to frames), so they follow the grains when the store is sorted and are
+// part of checkpoints.
+#include <vector>
+
+#include "core/vec.hpp"
+
+namespace partimix::dem {
+
+struct ExternalForces {
+  std::vector<Vec3>* force = nullptr;    // F_i
+  std::vector<double>* drag = nullptr;   // K_i
+  std::vector<Vec3>* impulse = nullptr;  // J_i, summed until reset by the setter
+};
+
+}  // namespace partimix::dem
