@@ -124,17 +124,22 @@ void CfdDemCoupling::map_grains() {
   cfd::FluidSolver& fluid = fluid_.fluid();
   cell_weights_.build(fluid.grid(), fluid.mask(), store.position(), radius_);
   face_weights_.build(fluid.grid(), fluid.mask(), cell_weights_, store.size());
-  row_volumes_.resize(store.size());
-  for (std::size_t p = 0; p < store.size(); ++p)
-    row_volumes_[p] = volumes_[static_cast<std::size_t>(store.id()[p])];
-  clipped_ = void_fraction(fluid.grid(), cell_weights_, row_volumes_, settings_.min_void_fraction,
-                           void_fraction_);
+  map_void_fraction(store.id());
   if (settings_.two_way && started_)
     fluid.set_void_fraction(void_fraction_);
   else if (settings_.two_way)
     fluid.start_void_fraction(void_fraction_);
   ids_.assign(store.id().begin(), store.id().end());
   positions_.assign(store.position().begin(), store.position().end());
+}
+
+// ε of the cells from the weights of the grains of `ids`, row by row.
+void CfdDemCoupling::map_void_fraction(std::span<const std::int64_t> ids) {
+  row_volumes_.resize(ids.size());
+  for (std::size_t r = 0; r < ids.size(); ++r)
+    row_volumes_[r] = volumes_[static_cast<std::size_t>(ids[r])];
+  clipped_ = void_fraction(fluid_.fluid().grid(), cell_weights_, row_volumes_,
+                           settings_.min_void_fraction, void_fraction_);
 }
 
 // K_i from the law, F_i = K_i u_i + the pressure's or buoyancy's force, held for the grains'
@@ -206,7 +211,8 @@ void CfdDemCoupling::save(StateArchive& archive, const std::string& prefix) cons
   archive.put_vectors(prefix + "other_force", other_force_);
 }
 
-// The rows of the last exchange, and their weights rebuilt from the positions then.
+// The rows of the last exchange, and their weights and void fraction rebuilt from the positions
+// then.
 void CfdDemCoupling::restore(const StateArchive& archive, const std::string& prefix) {
   const auto times = archive.doubles(prefix + "times");
   if (times.size() != 2)
@@ -230,6 +236,7 @@ void CfdDemCoupling::restore(const StateArchive& archive, const std::string& pre
   const cfd::FluidSolver& fluid = fluid_.fluid();
   cell_weights_.build(fluid.grid(), fluid.mask(), positions_, radius_);
   face_weights_.build(fluid.grid(), fluid.mask(), cell_weights_, n);
+  map_void_fraction(ids_);
 }
 
 }  // namespace partimix::coupling

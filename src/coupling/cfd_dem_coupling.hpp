@@ -8,6 +8,7 @@
 // is taken from the fluid over the next step, so fluid and grains together keep their momentum
 // to round-off with the pressure-gradient force.
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "cfd/cfd_solver.hpp"
@@ -48,6 +49,7 @@ class CfdDemCoupling final : public Coupling {
   void pressure_gradients();
   void settle_last_step();
   void map_grains();
+  void map_void_fraction(std::span<const std::int64_t> ids);
   void set_grain_forces(double dt);
   void set_fluid_source(double dt);
 

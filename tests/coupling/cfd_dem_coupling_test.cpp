@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "coupling/cfd_dem_coupling.hpp"
 #include "dem/dem_solver.hpp"
+#include "io/checkpoint_folder.hpp"
 #include "support/case_run.hpp"
 
 namespace partimix::coupling {
@@ -109,6 +110,54 @@ TEST(CfdDemCoupling, VoidFractionHoldsTheGrainsVolume) {
     deficit += (1.0 - eps) * fluid.grid().cell_volume();
   const double volume = 60 * 4.0 / 3.0 * M_PI * std::pow(0.0015, 3);
   EXPECT_NEAR(deficit, volume, 1e-12 * volume);
+}
+
+// Grains falling through water in a closed tank onto its floor, checkpointed.
+std::string tank(const std::string& end) {
+  return R"(solver: [cfd, dem]
+dimensions: 3
+gravity: [0, 0, -9.81]
+domain: {min: [0, 0, 0], max: [0.03, 0.03, 0.06]}
+time: {end: )" +
+         end + R"(, output_interval: 0.01, sample_interval: 0.002, checkpoint_interval: 0.01,
+       dt: 1.0e-4, sub_steps: {dem: 5}}
+walls:
+  - {shape: box, min: [0, 0, 0], max: [0.03, 0.03, 0.06]}
+fluid: {density: 1000, viscosity: 1.0e-3}
+cfd: {cell_size: 0.005}
+dem:
+  species:
+    - {name: glass, density: 2500, youngs_modulus: 1.0e7}
+  fill:
+    region: {shape: box, min: [0.003, 0.003, 0.03], max: [0.027, 0.027, 0.057]}
+    count: 40
+    radius: 0.0015
+    settle_time: 0
+couplings:
+  - {type: cfd_dem}
+)";
+}
+
+test_support::CaseRun run(const io::Case& the_case, const std::filesystem::path& out,
+                          const StateArchive* checkpoint = nullptr) {
+  app::Simulation simulation = app::build_simulation(the_case, {checkpoint != nullptr});
+  return test_support::run_simulation(the_case, simulation, out, checkpoint);
+}
+
+TEST(CfdDemCoupling, TheSecondHalfFromACheckpointIsTheRunThatWentThrough) {
+  const TempDir dir;
+  const io::Case whole = test_support::load_case_text(dir, tank("0.03"));
+  ASSERT_EQ(run(whole, dir / "whole").summary.status, "completed");
+  const io::Case half = test_support::load_case_text(dir, tank("0.015"));
+  ASSERT_EQ(run(half, dir / "parts").summary.status, "completed");
+  const StateArchive checkpoint = io::CheckpointFolder(dir / "parts" / "checkpoints").read_latest();
+  ASSERT_EQ(run(whole, dir / "parts", &checkpoint).summary.status, "completed");
+  EXPECT_EQ(test_support::read_file(dir / "whole" / "series.csv"),
+            test_support::read_file(dir / "parts" / "series.csv"));
+  for (const std::string frame : {"cfd_000003.vti", "dem_000003.vtp"})
+    EXPECT_TRUE(test_support::read_file(dir / "whole" / "frames" / frame) ==
+                test_support::read_file(dir / "parts" / "frames" / frame))
+        << frame;
 }
 
 std::string key_of_error(const std::string& text) {
