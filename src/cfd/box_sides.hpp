@@ -1,7 +1,8 @@
 #pragma once
-// The six sides of a grid fluid's box (docs/cfd.md, "Walls: blocked cells"): each a wall that
-// moves in its own plane at `velocity` (a lid), no-slip or slip; a periodic axis has none.
-// Sides are numbered 2 axis + (0 below, 1 above).
+// The six sides of a grid fluid's box (docs/cfd.md, "Walls: blocked cells"; "Inlets and
+// outlets"): each a no-slip wall that moves at `velocity` (in its plane: a lid; across it: an
+// inlet), a slip wall, or a pressure outlet (p = 0 on the side, the velocity's gradient across
+// it zero); a periodic axis has none. Sides are numbered 2 axis + (0 below, 1 above).
 #include <array>
 
 #include "core/vec.hpp"
@@ -10,6 +11,7 @@ namespace partimix::cfd {
 
 struct BoxSide {
   bool slip = false;
+  bool outlet = false;
   Vec3 velocity = Vec3::Zero();
 };
 

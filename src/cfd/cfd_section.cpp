@@ -44,10 +44,13 @@ void read_numerics(Reader& section, FluidSettings& settings) {
       section.optional<int>("max_iterations", settings.max_iterations, at_least(1));
 }
 
-// `sides: {"y+": {wall: no_slip, velocity: [1, 0]}, "x-": {wall: slip}}`; the others no-slip at
-// rest. A side's velocity lies in its plane (no flow through a side yet).
+// `sides: {"y+": {wall: no_slip, velocity: [1, 0]}, "x-": {wall: slip}, "z+": {wall: outlet}}`;
+// the others no-slip at rest. A no-slip side whose velocity crosses it is an inlet, which needs
+// an outlet side.
 void read_sides(Reader& section, const Domain& domain, BoxSides& sides) {
   Reader map = section.optional_map("sides");
+  bool inflow = false;
+  bool outlet = false;
   for (const std::string& axis_name : io::axis_names(domain.dimensions)) {
     const int axis = io::axis_index(axis_name);
     for (const char sign : {'-', '+'}) {
@@ -59,17 +62,21 @@ void read_sides(Reader& section, const Domain& domain, BoxSides& sides) {
             key, fmt::format("the domain is periodic along {}: it has no sides there", axis_name));
       Reader side = map.map(key);
       BoxSide& target = sides[static_cast<std::size_t>(2 * axis + (sign == '+' ? 1 : 0))];
-      target.slip = side.choice("wall", "no_slip", {"no_slip", "slip"}) == "slip";
+      const std::string wall = side.choice("wall", "no_slip", {"no_slip", "slip", "outlet"});
+      target.slip = wall == "slip";
+      target.outlet = wall == "outlet";
       target.velocity = side.vector("velocity", domain.dimensions, Vec3::Zero());
-      if (target.velocity[axis] != 0.0)
-        throw side.error("velocity", fmt::format("must lie in the side's plane (its {} component "
-                                                 "zero): no flow through a side yet",
-                                                 axis_name));
-      if (target.slip && target.velocity.norm() > 0.0)
-        throw side.error("velocity", "a slip side does not move the fluid; remove 'velocity'");
+      if (wall != "no_slip" && target.velocity.norm() > 0.0)
+        throw side.error("velocity", fmt::format("a side of wall: {} takes no velocity", wall));
+      inflow = inflow || target.velocity[axis] != 0.0;
+      outlet = outlet || target.outlet;
       side.done();
     }
   }
+  if (inflow && !outlet)
+    throw section.error("sides",
+                        "a side with a velocity across it (an inlet) needs a side of "
+                        "wall: outlet");
   map.done();
 }
 

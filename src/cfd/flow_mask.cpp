@@ -13,6 +13,7 @@ void open_faces(const grid::StaggeredGrid& grid, FlowMask& mask) {
   for (int axis = 0; axis < 3; ++axis) {
     std::vector<std::uint8_t>& open = mask.open_face[axis];
     open.assign(grid.face_count(axis), 0);
+    mask.outlet_face[axis].assign(grid.face_count(axis), 0);
     grid.for_each_face(axis, [&](const std::array<int, 3>& f, std::size_t index) {
       std::array<int, 3> below = f;
       std::array<int, 3> above = f;
@@ -22,6 +23,23 @@ void open_faces(const grid::StaggeredGrid& grid, FlowMask& mask) {
         return;
       open[index] = mask.open_cell[grid.cell(below[0], below[1], below[2])] &&
                     mask.open_cell[grid.cell(above[0], above[1], above[2])];
+    });
+  }
+}
+
+void mark_outlets(const grid::StaggeredGrid& grid, const BoxSides& sides, FlowMask& mask) {
+  for (int axis = 0; axis < grid.dimensions(); ++axis) {
+    if (grid.periodic(axis))
+      continue;
+    grid.for_each_face(axis, [&](const std::array<int, 3>& f, std::size_t index) {
+      const bool low = f[axis] == 0;
+      if (!low && f[axis] != grid.cells(axis))
+        return;
+      if (!box_side(sides, axis, low ? -1 : 1).outlet)
+        return;
+      std::array<int, 3> cell = f;
+      cell[axis] = low ? 0 : f[axis] - 1;
+      mask.outlet_face[axis][index] = mask.open_cell[grid.cell(cell[0], cell[1], cell[2])];
     });
   }
 }

@@ -30,6 +30,7 @@ FluidSolver::FluidSolver(const grid::StaggeredGrid& grid, const FlowMask& mask,
       correction_(grid.cell_count(), 0.0),
       predictor_(settings.momentum_tolerance, settings.max_iterations),
       projection_(settings.pressure_tolerance, settings.max_iterations) {
+  mark_outlets(grid_, sides_, mask_);
   set_side_faces();
   predictor_.lay_out(grid_, mask_);
   projection_.lay_out(grid_, mask_);
@@ -63,9 +64,16 @@ double FluidSolver::stable_dt() const {
   return dt;
 }
 
+// ε_f: the mean of the two cells, on an outlet face its one cell's.
 void FluidSolver::faces_from_cells(const std::vector<double>& cells, FaceArrays& faces) const {
   for (int a = 0; a < grid_.dimensions(); ++a)
     grid_.for_each_face(a, [&](const Coordinates& f, std::size_t index) {
+      if (mask_.outlet_face[a][index]) {
+        Coordinates cell = f;
+        cell[a] = f[a] == 0 ? 0 : f[a] - 1;
+        faces[a][index] = cells[cell_index(grid_, cell)];
+        return;
+      }
       if (!mask_.open_face[a][index])
         return;
       Coordinates below = f;
@@ -103,6 +111,10 @@ void FluidSolver::explicit_terms(double dt) {
                        grain_source_[a][index];
       coefficient_[a][index] = eps / diagonal_[a][index];
     });
+  for (int a = 0; a < grid_.dimensions(); ++a)
+    for (std::size_t index = 0; index < coefficient_[a].size(); ++index)
+      if (mask_.outlet_face[a][index])
+        coefficient_[a][index] = dt / rho;
   for (std::size_t c = 0; c < source_.size(); ++c)
     source_[c] = (cell_void_fraction_[c] - old_cell_void_fraction_[c]) / dt;
 }
@@ -113,11 +125,24 @@ LinearSolve FluidSolver::step(double dt) {
   explicit_terms(dt);
   momentum_solve_ = predictor_.solve(grid_, sides_, cell_void_fraction_, cell_viscosity_, diagonal_,
                                      rhs_, velocity_);
+  extrapolate_to_outlets();
   const LinearSolve pressure = projection_.project(grid_, mask_, void_fraction_, coefficient_,
                                                    source_, velocity_, correction_);
   for (std::size_t c = 0; c < pressure_.size(); ++c)
     pressure_[c] += correction_[c];
   return pressure;
+}
+
+// u* on an outlet face: that of the face one cell inside (zero gradient across the outlet).
+void FluidSolver::extrapolate_to_outlets() {
+  for (int a = 0; a < grid_.dimensions(); ++a)
+    grid_.for_each_face(a, [&](const Coordinates& f, std::size_t index) {
+      if (!mask_.outlet_face[a][index])
+        return;
+      Coordinates inside = f;
+      inside[a] = f[a] == 0 ? 1 : f[a] - 1;
+      velocity_[a][index] = velocity_[a][face_index(grid_, a, inside)];
+    });
 }
 
 void FluidSolver::restore(const FaceArrays& velocity, const std::vector<double>& pressure,

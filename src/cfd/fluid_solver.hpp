@@ -75,6 +75,7 @@ class FluidSolver {
   void set_side_faces();
   void faces_from_cells(const std::vector<double>& cells, FaceArrays& faces) const;
   void explicit_terms(double dt);
+  void extrapolate_to_outlets();
 
   grid::StaggeredGrid grid_;
   FlowMask mask_;

@@ -138,7 +138,7 @@ void MomentumPredictor::fill(const grid::StaggeredGrid& grid, const BoxSides& si
         break;
       case Link::box_wall: {
         const BoxSide& wall = box_side(sides, term.along, term.side);
-        if (wall.slip)
+        if (wall.slip || wall.outlet)  // no stress across it
           break;
         values[term.diagonal] += 2.0 * coefficient;
         b += 2.0 * coefficient * wall.velocity[axis];

@@ -10,8 +10,8 @@
 // open cells around the edge). A neighbour face whose velocity is set (a box side, against a
 // blocked cell) enters as a known value; where the neighbour lies beyond a no-slip wall
 // (outside the box, or between two blocked cells) the ghost value 2 u_wall - u*_f puts u_wall
-// on the wall half a cell away; a slip side adds nothing. Blocked cells' walls are at rest.
-// Each component's system is symmetric positive definite, solved by conjugate gradients; its
+// on the wall half a cell away; a slip or outlet side adds nothing. Blocked cells' walls are at
+// rest. Each component's system is symmetric positive definite, solved by conjugate gradients; its
 // pattern is laid out once per mask, its values refilled each step without allocating.
 #include <array>
 #include <cstdint>

@@ -6,10 +6,12 @@
 //
 // then u_f = u*_f - a_f (φ_above - φ_below) / h on the open faces, so that the discrete
 // continuity equation Σ_f ±ε_f u_f A_f + V_c s_c = 0 holds in every open cell to the solver's
-// tolerance. Each connected region of open cells without an open boundary has a pressure level
-// of its own: one cell of each is held at φ = 0 and left out of the unknowns, and the region's
-// right-hand side loses its mean first (round-off, or an imbalance of the sources, which
-// `imbalance()` reports), so the system is symmetric positive definite. Solved by BiCGSTAB with
+// tolerance. An outlet face of a cell (p = 0 on the side, half a cell away) adds 2 w_f φ_c to its
+// row and is corrected by u_f = u*_f ∓ a_f φ_c / (h/2). Each connected region of open cells
+// without an outlet has a pressure level of its own: one cell of each is held at φ = 0 and left
+// out of the unknowns, and the region's right-hand side loses its mean first (round-off, or an
+// imbalance of the sources, which `imbalance()` reports), so the system is symmetric positive
+// definite. Solved by BiCGSTAB with
 // the aggregation multigrid (core/bicgstab.hpp, core/aggregation_multigrid.hpp). The matrix's
 // pattern is laid out once per mask; each step refills its values and allocates nothing.
 #include <cstdint>
@@ -54,6 +56,7 @@ class PressureProjection {
     std::size_t face;
     int diagonal;      // the slot of the row's own column
     int off_diagonal;  // the slot of the neighbour's column, or -1 for a held neighbour
+    bool outlet;       // an outlet face: φ = 0 half a cell away
   };
   void find_regions(const grid::StaggeredGrid& grid, const FlowMask& mask);
   void lay_out_row(const grid::StaggeredGrid& grid, const FlowMask& mask, int i, int j, int k);
@@ -73,6 +76,7 @@ class PressureProjection {
   std::vector<int> region_;  // per cell: its region, -1 closed
   std::vector<double> region_sum_;
   std::vector<double> region_volume_;
+  std::vector<std::uint8_t> region_outlet_;  // per region: it has an outlet face
   SparsePattern pattern_;
   std::vector<std::pair<std::int64_t, int>> entries_;  // a row's (column, slot id) while laid out
   std::vector<int> slots_;

@@ -121,9 +121,12 @@ TEST(CfdMethod, CaseErrorsNameTheirKey) {
       power_law.find("viscosity: 0.01"), 15,
       "rheology: {model: power_law, consistency: 1, flow_index: 0.5, viscosity_max: 10}");
   EXPECT_EQ(key_of_error(power_law), "fluid.rheology");
-  std::string through_side = cavity("1.0");
-  through_side.replace(through_side.find("[1, 0]"), 6, "[1, 1]");
-  EXPECT_EQ(key_of_error(through_side), "cfd.sides.y+.velocity");
+  std::string no_outlet = cavity("1.0");
+  no_outlet.replace(no_outlet.find("[1, 0]"), 6, "[1, -1]");
+  EXPECT_EQ(key_of_error(no_outlet), "cfd.sides");
+  std::string moving_outlet = cavity("1.0");
+  moving_outlet.replace(moving_outlet.find("{velocity"), 9, "{wall: outlet, velocity");
+  EXPECT_EQ(key_of_error(moving_outlet), "cfd.sides.y+.velocity");
   EXPECT_EQ(key_of_error(cavity("1.0",
                                 "walls:\n  - {shape: box, min: [0.2, 0.2], max: [0.8, "
                                 "0.8], motion: {type: rotation, rpm: 10}}\n")),
