@@ -40,6 +40,8 @@ void RunClock::advance(double time, double dt) {
   for (auto& coupling : simulation_.couplings)
     coupling->exchange(time, dt);
   for (std::size_t m = 0; m < simulation_.methods.size(); ++m) {
+    for (auto& coupling : simulation_.couplings)
+      coupling->before_method(m, time, dt);
     const int sub_steps = case_.methods[m].sub_steps;
     const double sub_dt = dt / sub_steps;
     for (int s = 0; s < sub_steps; ++s)

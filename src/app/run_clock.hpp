@@ -4,7 +4,8 @@
 //   dt = time.dt                              when the case fixes it, else
 //   dt = min over the methods m of k_m dt_m   (dt_m the method's stable step),
 // and method m takes k_m = time.sub_steps.m steps of dt / k_m in it, after the couplings have
-// exchanged what the methods owe each other for the step. With one method and k = 1 this is
+// exchanged what the methods owe each other for the step, and again what they owe method m
+// (coupling/coupling.hpp). With one method and k = 1 this is
 // the single method's own adaptive step, bit for bit.
 #include <optional>
 #include <string>

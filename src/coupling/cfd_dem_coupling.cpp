@@ -25,10 +25,13 @@ double largest_spacing(const grid::StaggeredGrid& grid) {
 // V_i and d_i by grain id, from the grains' `volume` field (superquadrics) or their radius
 // (spheres); d_i the diameter of the sphere of the grain's volume. The kernel's support b is
 // kernel_radius (default 2 d_max), at least 1.5 h_max (docs/cfd-dem.md, "Void fraction").
-CfdDemCoupling::CfdDemCoupling(cfd::CfdSolver& fluid, dem::DemSolver& grains,
+CfdDemCoupling::CfdDemCoupling(cfd::CfdSolver& fluid, std::size_t fluid_method,
+                               dem::DemSolver& grains, std::size_t grain_method,
                                const CfdDemSettings& settings, const Vec3& gravity)
     : fluid_(fluid),
+      fluid_method_(fluid_method),
       grains_(grains),
+      grain_method_(grain_method),
       external_(grains.enable_external_forces()),
       settings_(settings),
       gravity_(gravity),
@@ -51,21 +54,34 @@ CfdDemCoupling::CfdDemCoupling(cfd::CfdSolver& fluid, dem::DemSolver& grains,
                      1.5 * largest_spacing(fluid.fluid().grid()));
 }
 
-void CfdDemCoupling::exchange(double /*time*/, double dt) {
-  const ParticleStore& store = grains_.particles();
-  index_of_id_.resize(store.size());
-  for (std::size_t p = 0; p < store.size(); ++p)
-    index_of_id_[static_cast<std::size_t>(store.id()[p])] = p;
-  pressure_gradients();
-  deferred_.assign(store.size(), Vec3::Zero());
+void CfdDemCoupling::before_method(std::size_t m, double /*time*/, double dt) {
+  if (m == fluid_method_)
+    exchange_with_fluid(dt);
+  else if (m == grain_method_)
+    exchange_with_grains(dt);
+}
+
+// At the run's start the fluid starts with the grains' void fraction (no change over its first
+// step).
+void CfdDemCoupling::exchange_with_fluid(double dt) {
+  deferred_.assign(grains_.particles().size(), Vec3::Zero());
   if (started_ && settings_.two_way)
-    settle_last_step();
+    settle_last_step(last_dt_);
   map_grains();
-  set_grain_forces(dt);
+  if (settings_.two_way && started_)
+    fluid_.fluid().set_void_fraction(void_fraction_);
+  else if (settings_.two_way)
+    fluid_.fluid().start_void_fraction(void_fraction_);
+  set_drag();
   if (settings_.two_way)
     set_fluid_source(dt);
   started_ = true;
   last_dt_ = dt;
+}
+
+void CfdDemCoupling::exchange_with_grains(double dt) {
+  pressure_gradients();
+  set_grain_forces(dt);
 }
 
 // (∇p)_f on the open faces from the fluid's present pressure.
@@ -81,10 +97,12 @@ void CfdDemCoupling::pressure_gradients() {
   }
 }
 
-CfdDemCoupling::Sample CfdDemCoupling::sample(std::size_t row) const {
+// The fluid at grain p with its weights of the last mapping; its pressure gradient from the
+// face gradients found before the grains step.
+CfdDemCoupling::Sample CfdDemCoupling::sample(std::size_t p, bool with_pressure) const {
   const cfd::FluidSolver& fluid = fluid_.fluid();
   Sample s;
-  const auto cells = cell_weights_.of(row);
+  const auto cells = cell_weights_.of(p);
   if (cells.empty()) {
     s.mapped = false;
     return s;
@@ -93,76 +111,82 @@ CfdDemCoupling::Sample CfdDemCoupling::sample(std::size_t row) const {
   for (const KernelWeights::Weight& w : cells)
     s.void_fraction += w.weight * void_fraction_[w.cell];
   for (int a = 0; a < fluid.grid().dimensions(); ++a)
-    for (const FaceWeights::Weight& w : face_weights_.of(a, row)) {
+    for (const FaceWeights::Weight& w : face_weights_.of(a, p)) {
       s.velocity[a] += w.weight * fluid.velocity()[a][w.face];
-      s.pressure_gradient[a] += w.weight * gradient_[a][w.face];
+      if (with_pressure)
+        s.pressure_gradient[a] += w.weight * gradient_[a][w.face];
     }
   return s;
 }
 
-// D_r = J_r - Δt K_r (u_r^{n+1} - v_r^n) - Δt f_r for each grain r of the last exchange, with
-// its weights then: the impulse it received less what the fluid's step gave it (docs/cfd-dem.md,
-// "Momentum"): f_r the pressure force at p^{n+1} with `gradient` (the fluid's step carried
-// -ε ∇p^{n+1}), else the held force itself.
-void CfdDemCoupling::settle_last_step() {
-  const double dt = last_dt_;
-  for (std::size_t r = 0; r < ids_.size(); ++r) {
-    const auto id = static_cast<std::size_t>(ids_[r]);
-    const std::size_t p = index_of_id_[id];
-    const Sample s = sample(r);
-    const Vec3 pressure = settings_.pressure_force == PressureForce::gradient
-                              ? Vec3(-volumes_[id] * s.pressure_gradient)
-                              : other_force_[r];
-    deferred_[p] =
-        (*external_.impulse)[p] - dt * drag_[r] * (s.velocity - velocities_[r]) - dt * pressure;
+// D_i = J_i - Δt (K_i (u_i - v_i) + f_i) for each grain of the last step (rows by id: the DEM
+// sorts its grains), u_i the fluid's velocity the grain stepped with, v_i its velocity the
+// fluid's step used, f_i the held force other than the drag: the impulse the grain received less
+// what the fluid's step gave it (docs/cfd-dem.md, "Momentum"). With `gradient` f_i = -V_i ∇p^{n+1}
+// is what the fluid's step carried as -ε ∇p^{n+1}, gathered with the same weights.
+void CfdDemCoupling::settle_last_step(double dt) {
+  const ParticleStore& store = grains_.particles();
+  row_of_id_.resize(ids_.size());
+  for (std::size_t r = 0; r < ids_.size(); ++r)
+    row_of_id_[static_cast<std::size_t>(ids_[r])] = r;
+  for (std::size_t p = 0; p < store.size(); ++p) {
+    const std::size_t r = row_of_id_[static_cast<std::size_t>(store.id()[p])];
+    const Vec3 drag = drag_[r] * (fluid_velocities_[r] - velocities_[r]);
+    deferred_[p] = (*external_.impulse)[p] - dt * (drag + other_force_[r]);
   }
 }
 
-// The weights and void fraction of the grains where they are now; the fluid steps to it (two-way).
+// The weights and void fraction of the grains where they are now.
 void CfdDemCoupling::map_grains() {
   const ParticleStore& store = grains_.particles();
-  cfd::FluidSolver& fluid = fluid_.fluid();
+  const cfd::FluidSolver& fluid = fluid_.fluid();
   cell_weights_.build(fluid.grid(), fluid.mask(), store.position(), radius_);
   face_weights_.build(fluid.grid(), fluid.mask(), cell_weights_, store.size());
-  map_void_fraction(store.id());
-  if (settings_.two_way && started_)
-    fluid.set_void_fraction(void_fraction_);
-  else if (settings_.two_way)
-    fluid.start_void_fraction(void_fraction_);
-  ids_.assign(store.id().begin(), store.id().end());
-  positions_.assign(store.position().begin(), store.position().end());
+  row_volumes_.resize(store.size());
+  for (std::size_t p = 0; p < store.size(); ++p)
+    row_volumes_[p] = volumes_[static_cast<std::size_t>(store.id()[p])];
+  clipped_ = void_fraction(fluid.grid(), cell_weights_, row_volumes_, settings_.min_void_fraction,
+                           void_fraction_);
 }
 
-// ε of the cells from the weights of the grains of `ids`, row by row.
-void CfdDemCoupling::map_void_fraction(std::span<const std::int64_t> ids) {
-  row_volumes_.resize(ids.size());
-  for (std::size_t r = 0; r < ids.size(); ++r)
-    row_volumes_[r] = volumes_[static_cast<std::size_t>(ids[r])];
-  clipped_ = void_fraction(fluid_.fluid().grid(), cell_weights_, row_volumes_,
-                           settings_.min_void_fraction, void_fraction_);
-}
-
-// K_i from the law, F_i = K_i u_i + the pressure's or buoyancy's force, held for the grains'
-// sub-steps, whose length must not exceed the grain's relaxation time m_i / K_i.
-void CfdDemCoupling::set_grain_forces(double dt) {
+// K_i from the law with the fluid's present velocity and the grains' v_i (docs/cfd-dem.md,
+// "The forces on a grain").
+void CfdDemCoupling::set_drag() {
   const ParticleStore& store = grains_.particles();
   const cfd::FluidSettings& fluid = fluid_.fluid().settings();
-  const double sub_dt = dt / settings_.grain_sub_steps;
-  velocities_.assign(store.velocity().begin(), store.velocity().end());
   drag_.assign(store.size(), 0.0);
+  velocities_.assign(store.velocity().begin(), store.velocity().end());
+  for (std::size_t p = 0; p < store.size(); ++p) {
+    const auto id = static_cast<std::size_t>(store.id()[p]);
+    const Sample s = sample(p, false);
+    if (!s.mapped)
+      continue;
+    const Vec3 slip = s.velocity - store.velocity()[p];
+    const DragState state{s.void_fraction, slip.norm(), diameters_[id], fluid.density,
+                          fluid.viscosity};
+    drag_[p] = law_->coefficient(state) * volumes_[id];
+  }
+}
+
+// F_i = K_i u_i + the pressure's or buoyancy's force, u_i and ∇p from the fluid's new state,
+// held for the grains' sub-steps, whose length must not exceed the grain's relaxation time
+// m_i / K_i.
+void CfdDemCoupling::set_grain_forces(double dt) {
+  const ParticleStore& store = grains_.particles();
+  const double density = fluid_.fluid().settings().density;
+  const double sub_dt = dt / settings_.grain_sub_steps;
+  ids_.assign(store.id().begin(), store.id().end());
+  fluid_velocities_.assign(store.size(), Vec3::Zero());
   other_force_.assign(store.size(), Vec3::Zero());
   for (std::size_t p = 0; p < store.size(); ++p) {
     const auto id = static_cast<std::size_t>(store.id()[p]);
-    const Sample s = sample(p);
+    const Sample s = sample(p, true);
     if (s.mapped) {
-      const Vec3 slip = s.velocity - store.velocity()[p];
-      const DragState state{s.void_fraction, slip.norm(), diameters_[id], fluid.density,
-                            fluid.viscosity};
-      drag_[p] = law_->coefficient(state) * volumes_[id];
+      fluid_velocities_[p] = s.velocity;
       if (settings_.pressure_force == PressureForce::gradient)
         other_force_[p] = -volumes_[id] * s.pressure_gradient;
       else if (settings_.pressure_force == PressureForce::buoyancy)
-        other_force_[p] = -fluid.density * volumes_[id] * gravity_;
+        other_force_[p] = -density * volumes_[id] * gravity_;
     }
     if (sub_dt * drag_[p] > store.mass()[p])
       throw RunError(fmt::format(
@@ -170,7 +194,7 @@ void CfdDemCoupling::set_grain_forces(double dt) {
           "{:.3g} s (docs/cfd-dem.md, \"One coupled step and the sub-cycles\"); raise "
           "time.sub_steps.dem or lower cfd.max_dt",
           id, sub_dt, store.mass()[p] / drag_[p]));
-    (*external_.force)[p] = drag_[p] * s.velocity + other_force_[p];
+    (*external_.force)[p] = drag_[p] * fluid_velocities_[p] + other_force_[p];
     (*external_.drag)[p] = drag_[p];
     (*external_.impulse)[p] = Vec3::Zero();
   }
@@ -185,7 +209,7 @@ void CfdDemCoupling::set_fluid_source(double dt) {
     std::vector<double>& source = fluid.grain_source()[a];
     std::fill(k.begin(), k.end(), 0.0);
     std::fill(source.begin(), source.end(), 0.0);
-    for (std::size_t p = 0; p < ids_.size(); ++p) {
+    for (std::size_t p = 0; p < drag_.size(); ++p) {
       const double push = drag_[p] * velocities_[p][a] - deferred_[p][a] / dt;
       for (const FaceWeights::Weight& w : face_weights_.of(a, p)) {
         k[w.face] += w.weight * drag_[p] / volume;
@@ -205,14 +229,13 @@ Vec3 CfdDemCoupling::deferred_momentum() const {
 void CfdDemCoupling::save(StateArchive& archive, const std::string& prefix) const {
   archive.put_doubles(prefix + "times", std::vector<double>{started_ ? 1.0 : 0.0, last_dt_});
   archive.put_integers(prefix + "ids", ids_);
-  archive.put_vectors(prefix + "positions", positions_);
-  archive.put_vectors(prefix + "velocities", velocities_);
   archive.put_doubles(prefix + "drag", drag_);
+  archive.put_vectors(prefix + "velocities", velocities_);
+  archive.put_vectors(prefix + "fluid_velocities", fluid_velocities_);
   archive.put_vectors(prefix + "other_force", other_force_);
 }
 
-// The rows of the last exchange, and their weights and void fraction rebuilt from the positions
-// then.
+// What the last step used of each grain, by the grains' order when it began (ids).
 void CfdDemCoupling::restore(const StateArchive& archive, const std::string& prefix) {
   const auto times = archive.doubles(prefix + "times");
   if (times.size() != 2)
@@ -221,22 +244,18 @@ void CfdDemCoupling::restore(const StateArchive& archive, const std::string& pre
   last_dt_ = times[1];
   const auto ids = archive.integers(prefix + "ids");
   ids_.assign(ids.begin(), ids.end());
-  positions_ = archive.vectors(prefix + "positions");
-  velocities_ = archive.vectors(prefix + "velocities");
   const auto drag = archive.doubles(prefix + "drag");
   drag_.assign(drag.begin(), drag.end());
+  velocities_ = archive.vectors(prefix + "velocities");
+  fluid_velocities_ = archive.vectors(prefix + "fluid_velocities");
   other_force_ = archive.vectors(prefix + "other_force");
   const std::size_t n = grains_.particles().size();
-  const bool fits = ids_.size() == n && positions_.size() == n && velocities_.size() == n &&
-                    drag_.size() == n && other_force_.size() == n;
+  const bool fits = ids_.size() == n && drag_.size() == n && velocities_.size() == n &&
+                    fluid_velocities_.size() == n && other_force_.size() == n;
   if (!fits || std::any_of(ids_.begin(), ids_.end(), [n](std::int64_t id) {
         return id < 0 || static_cast<std::size_t>(id) >= n;
       }))
     throw StateError(fmt::format("{}: the rows do not fit the run's {} grains", prefix, n));
-  const cfd::FluidSolver& fluid = fluid_.fluid();
-  cell_weights_.build(fluid.grid(), fluid.mask(), positions_, radius_);
-  face_weights_.build(fluid.grid(), fluid.mask(), cell_weights_, n);
-  map_void_fraction(ids_);
 }
 
 }  // namespace partimix::coupling

@@ -1,12 +1,15 @@
 #pragma once
-// The two-way coupling of the grid fluid and the DEM grains (docs/cfd-dem.md): at each exchange
-// the grains' kernel weights on the open cells and faces, the void fraction the fluid steps to,
-// the fluid's velocity, void fraction and pressure gradient gathered at each grain, the drag
-// coefficient K_i of the chosen law, the grains' held forces (dem/external_forces.hpp), and the
-// fluid's implicit drag K_f and explicit source S_e. The momentum the implicit split and the
-// sub-cycles leave unbalanced over a step, D_i (from the impulse the grains actually received),
-// is taken from the fluid over the next step, so fluid and grains together keep their momentum
-// to round-off with the pressure-gradient force.
+// The two-way coupling of the grid fluid and the DEM grains (docs/cfd-dem.md, "One coupled
+// step"): the fluid steps first, then the grains. Before the fluid steps, the grains are mapped
+// where they are: their kernel weights, the void fraction the fluid steps to, the drag
+// coefficient K_i of the chosen law from the fluid's present velocity, and the fluid's implicit
+// drag K_f and explicit source S_e. Before the grains step, the fluid's new velocity and pressure
+// gradient are gathered at each grain with the same weights, and the grains are given their held
+// forces (dem/external_forces.hpp). The momentum the sub-cycles leave unbalanced over a step,
+// D_i = J_i - (what the fluid's step gave grain i), from the impulse J_i the grains actually
+// received, is taken from the fluid over the next step, so fluid and grains together keep their
+// momentum to round-off with the pressure-gradient force.
+#include <cstddef>
 #include <memory>
 #include <span>
 #include <vector>
@@ -23,16 +26,22 @@ namespace partimix::coupling {
 
 class CfdDemCoupling final : public Coupling {
  public:
-  CfdDemCoupling(cfd::CfdSolver& fluid, dem::DemSolver& grains, const CfdDemSettings& settings,
-                 const Vec3& gravity);
+  // `fluid_method` and `grain_method`: the methods' indices in the case's `solver`.
+  CfdDemCoupling(cfd::CfdSolver& fluid, std::size_t fluid_method, dem::DemSolver& grains,
+                 std::size_t grain_method, const CfdDemSettings& settings, const Vec3& gravity);
 
-  void exchange(double time, double dt) override;
+  void before_method(std::size_t m, double time, double dt) override;
   void save(StateArchive& archive, const std::string& prefix) const override;
   void restore(const StateArchive& archive, const std::string& prefix) override;
 
-  // Σ_i D_i found at the last exchange: the momentum the fluid gives back over the next step.
+  // Before the fluid steps: D_i of the last step, the grains' void fraction and drag.
+  void exchange_with_fluid(double dt);
+  // Before the grains step: their held forces from the fluid's new state.
+  void exchange_with_grains(double dt);
+
+  // Σ_i D_i found before the fluid's last step: the momentum it gives back over that step.
   Vec3 deferred_momentum() const;
-  // Cells whose void fraction was clipped to min_void_fraction at the last exchange, and grains
+  // Cells whose void fraction was clipped to min_void_fraction at the last mapping, and grains
   // in no open cell (no force from the fluid).
   std::size_t clipped_cells() const { return clipped_; }
   std::size_t unmapped_grains() const { return cell_weights_.unmapped(); }
@@ -45,16 +54,18 @@ class CfdDemCoupling final : public Coupling {
     double void_fraction = 1.0;
     bool mapped = true;  // false: the grain lies in no open cell
   };
-  Sample sample(std::size_t row) const;
+  Sample sample(std::size_t p, bool with_pressure) const;
   void pressure_gradients();
-  void settle_last_step();
   void map_grains();
-  void map_void_fraction(std::span<const std::int64_t> ids);
+  void settle_last_step(double dt);
+  void set_drag();
   void set_grain_forces(double dt);
   void set_fluid_source(double dt);
 
   cfd::CfdSolver& fluid_;
+  std::size_t fluid_method_;
   dem::DemSolver& grains_;
+  std::size_t grain_method_;
   dem::ExternalForces external_;
   CfdDemSettings settings_;
   Vec3 gravity_;
@@ -62,21 +73,22 @@ class CfdDemCoupling final : public Coupling {
   double radius_ = 0.0;
   std::vector<double> volumes_;    // V_i by grain id
   std::vector<double> diameters_;  // d_i by grain id
-  KernelWeights cell_weights_;
+  KernelWeights cell_weights_;     // of the grains where they were last mapped
   FaceWeights face_weights_;
-  std::vector<double> void_fraction_;  // the cells', as given to the fluid
-  std::vector<double> row_volumes_;    // V_i in the grains' present order
-  cfd::FaceArrays gradient_;           // (∇p)_f at the exchange
+  std::vector<double> void_fraction_;  // the cells', as last mapped
+  std::vector<double> row_volumes_;    // V_i in the grains' order when mapped
+  cfd::FaceArrays gradient_;           // (∇p)_f before the grains step
   std::size_t clipped_ = 0;
-  // Per row of the last exchange (the grains' order then): id, position, velocity, K_i and the
-  // held force other than the drag; D_i in the grains' present order.
-  std::vector<std::int64_t> ids_;
-  std::vector<Vec3> positions_;
-  std::vector<Vec3> velocities_;
+  // Per grain in the order of the last mapping (the grains do not move before they step):
+  // K_i, v_i as the fluid's step used them, D_i; and the grains' held force other than the drag
+  // and the fluid's velocity at them as they stepped with, with their ids.
   std::vector<double> drag_;
-  std::vector<Vec3> other_force_;
+  std::vector<Vec3> velocities_;
   std::vector<Vec3> deferred_;
-  std::vector<std::size_t> index_of_id_;  // the grains' present order
+  std::vector<std::int64_t> ids_;
+  std::vector<Vec3> fluid_velocities_;
+  std::vector<Vec3> other_force_;
+  std::vector<std::size_t> row_of_id_;
   bool started_ = false;
   double last_dt_ = 0.0;
 };

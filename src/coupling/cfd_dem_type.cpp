@@ -25,6 +25,11 @@ std::shared_ptr<io::CouplingSection> CfdDemType::read(io::Reader& item,
   const io::MethodSpec* grains = the_case.method("dem");
   if (fluid == nullptr || grains == nullptr)
     throw item.error("type", "cfd_dem couples the methods cfd and dem: name both in `solver`");
+  if (method_index(the_case, "cfd") > method_index(the_case, "dem"))
+    throw io::case_error(the_case, "solver",
+                         "with a cfd_dem coupling list cfd before dem (solver: [cfd, dem]): the "
+                         "fluid steps first, then the grains in its new state (docs/cfd-dem.md, "
+                         "\"One coupled step\")");
   if (fluid->sub_steps != 1)
     throw io::case_error(the_case, "time.sub_steps.cfd",
                          "with a cfd_dem coupling the fluid takes one step per step of the run "
@@ -50,9 +55,11 @@ std::shared_ptr<io::CouplingSection> CfdDemType::read(io::Reader& item,
 std::unique_ptr<Coupling> CfdDemType::build(const io::Case& the_case, const io::CouplingSpec& spec,
                                             std::span<io::MethodInstance> methods) const {
   const CfdDemSettings& settings = dynamic_cast<const CfdDemSection&>(*spec.section).settings;
-  auto& fluid = dynamic_cast<cfd::CfdSolver&>(*methods[method_index(the_case, "cfd")].solver);
-  auto& grains = dynamic_cast<dem::DemSolver&>(*methods[method_index(the_case, "dem")].solver);
-  return std::make_unique<CfdDemCoupling>(fluid, grains, settings, the_case.gravity);
+  const std::size_t f = method_index(the_case, "cfd");
+  const std::size_t g = method_index(the_case, "dem");
+  auto& fluid = dynamic_cast<cfd::CfdSolver&>(*methods[f].solver);
+  auto& grains = dynamic_cast<dem::DemSolver&>(*methods[g].solver);
+  return std::make_unique<CfdDemCoupling>(fluid, f, grains, g, settings, the_case.gravity);
 }
 
 }  // namespace partimix::coupling

@@ -1,8 +1,12 @@
 #pragma once
 // What joins two methods (DESIGN.md, "One run"): a coupling reads the state of one method and
-// writes forces or sources into another's (CFD-DEM drag, void fraction and momentum exchange
-// next), so that neither method knows the other. The Runner calls every coupling once per step
-// of the run's clock, before the methods step, and saves its state in checkpoints.
+// writes forces or sources into another's (CFD-DEM: void fraction, drag and momentum exchange),
+// so that neither method knows the other. The Runner calls every coupling once per step of the
+// run's clock before the methods step (`exchange`), and again before each method takes its
+// steps (`before_method`, with the method's index in the case's `solver`), so that a coupling
+// can hand a method what another method has just computed; it saves its state in checkpoints.
+#include <cstddef>
+
 #include "core/state_archive.hpp"
 
 namespace partimix::coupling {
@@ -11,7 +15,10 @@ class Coupling {
  public:
   virtual ~Coupling() = default;
   // Exchanges what the coupled methods owe each other for the step [time, time + dt].
-  virtual void exchange(double time, double dt) = 0;
+  virtual void exchange(double /*time*/, double /*dt*/) {}
+  // Before method `m` takes its steps over [time, time + dt] (after the methods before it in
+  // `solver` have taken theirs).
+  virtual void before_method(std::size_t /*m*/, double /*time*/, double /*dt*/) {}
   // The coupling's own state (averaging windows, lagged fields), for checkpoints.
   virtual void save(StateArchive& /*archive*/, const std::string& /*prefix*/) const {}
   virtual void restore(const StateArchive& /*archive*/, const std::string& /*prefix*/) {}

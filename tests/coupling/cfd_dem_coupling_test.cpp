@@ -2,7 +2,8 @@
 // grains without gravity, the momentum of fluid and grains together, less the momentum the
 // coupling will take back from the fluid over the next step (D), stays what it was to round-off
 // over many sub-cycled steps, the drag split and the pressure-gradient force included; the
-// grains' volume is the void fraction's deficit; the case errors name their key.
+// grains' volume is the void fraction's deficit; a coupled run resumes bit for bit from a
+// checkpoint; the case errors name their key.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -81,11 +82,12 @@ TEST(CfdDemCoupling, MomentumOfFluidAndGrainsIsKeptToRoundOff) {
   for (int step = 0; step < 60; ++step) {
     // Measured with the void fraction the fluid's last step went to (the exchange maps anew).
     const Vec3 before = fluid_momentum(fluid.fluid()) + grain_momentum(grains);
-    coupling.exchange(t, dt);
+    coupling.exchange_with_fluid(dt);
     const Vec3 total = before - coupling.deferred_momentum();
     largest = std::max(largest, (total - start).norm() / scale);
     deferred = std::max(deferred, coupling.deferred_momentum().norm() / scale);
     fluid.step(dt);
+    coupling.exchange_with_grains(dt);
     for (int s = 0; s < sub_steps; ++s)
       dem.step(dt / sub_steps);
     t += dt;
@@ -103,7 +105,7 @@ TEST(CfdDemCoupling, VoidFractionHoldsTheGrainsVolume) {
   const TempDir dir;
   const io::Case the_case = test_support::load_case_text(dir, periodic_box("{type: cfd_dem}"));
   app::Simulation simulation = app::build_simulation(the_case);
-  simulation.couplings[0]->exchange(0.0, 1e-4);
+  dynamic_cast<CfdDemCoupling&>(*simulation.couplings[0]).exchange_with_fluid(1e-4);
   const auto& fluid = dynamic_cast<cfd::CfdSolver&>(*simulation.methods[0].solver).fluid();
   double deficit = 0.0;
   for (const double eps : fluid.void_fraction())
@@ -180,6 +182,9 @@ TEST(CfdDemCoupling, CaseErrorsNameTheirKey) {
   std::string fluid_sub_steps = periodic_box("{type: cfd_dem}");
   fluid_sub_steps.replace(fluid_sub_steps.find("dem: 4"), 6, "dem: 4, cfd: 2");
   EXPECT_EQ(key_of_error(fluid_sub_steps), "time.sub_steps.cfd");
+  std::string fluid_first = periodic_box("{type: cfd_dem}");
+  fluid_first.replace(fluid_first.find("[cfd, dem]"), 10, "[dem, cfd]");
+  EXPECT_EQ(key_of_error(fluid_first), "solver");
   EXPECT_EQ(key_of_error(periodic_box("{type: cfd_dem, drag: stokes}")), "couplings[0].drag");
   EXPECT_EQ(key_of_error(periodic_box("{type: cfd_dem, min_void_fraction: 1.5}")),
             "couplings[0].min_void_fraction");
