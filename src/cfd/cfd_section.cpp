@@ -16,14 +16,9 @@ using io::Reader;
 void read_fluid(Reader& root, CfdConfig& config) {
   Reader fluid = root.map("fluid");
   config.settings.density = fluid.required<double>("density", kPositive);
-  config.rheology = io::read_fluid_rheology(fluid);
-  if (config.rheology.model != "newtonian") {
-    throw fluid.error("rheology", fmt::format("the cfd method takes a Newtonian fluid so far, not "
-                                              "'{}' (docs/cfd.md, \"Status\")",
-                                              config.rheology.model));
-  }
-  config.settings.viscosity = config.rheology.viscosity;
-  if (!(config.settings.viscosity > 0.0))
+  config.settings.rheology = io::read_fluid_rheology(fluid);
+  const materials::RheologyConfig& rheology = config.settings.rheology;
+  if (rheology.model == "newtonian" && !(rheology.viscosity > 0.0))
     throw fluid.error("viscosity", "the cfd method needs a viscosity above zero");
   fluid.done();
 }

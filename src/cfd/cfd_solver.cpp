@@ -111,8 +111,10 @@ std::map<std::string, double> CfdSolver::derived_parameters() const {
   const grid::StaggeredGrid& grid = fluid_->grid();
   std::map<std::string, double> parameters{
       {"cells [-]", static_cast<double>(grid.cell_count())},
-      {"open cells [-]", static_cast<double>(open_cells_.size())},
-      {"kinematic viscosity [m^2/s]", config_.settings.viscosity / config_.settings.density}};
+      {"open cells [-]", static_cast<double>(open_cells_.size())}};
+  const materials::RheologyConfig& rheology = config_.settings.rheology;
+  if (rheology.model == "newtonian")
+    parameters["kinematic viscosity [m^2/s]"] = rheology.viscosity / config_.settings.density;
   const char* names[] = {"x", "y", "z"};
   for (int axis = 0; axis < grid.dimensions(); ++axis)
     parameters[fmt::format("cell size {} [m]", names[axis])] = grid.spacing(axis);

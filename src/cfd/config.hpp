@@ -7,14 +7,12 @@
 #include "cfd/box_sides.hpp"
 #include "cfd/fluid_solver.hpp"
 #include "geometry/surface.hpp"
-#include "materials/rheology.hpp"
 
 namespace partimix::cfd {
 
 struct CfdConfig {
   double cell_size = 0.0;  // the wanted h [m]; each axis takes the nearest whole count of cells
-  FluidSettings settings;  // density, numerics; the viscosity from `rheology`
-  materials::RheologyConfig rheology;
+  FluidSettings settings;  // density, rheology, numerics
   BoxSides sides;
   // The surfaces of the case's walls (all fixed): cells whose centre lies on or behind one are
   // blocked (docs/cfd.md, "Walls: blocked cells").

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cfd/cell_shear_rate.hpp"
 #include "cfd/face_stencil.hpp"
 
 namespace partimix::cfd {
@@ -17,7 +18,7 @@ FluidSolver::FluidSolver(const grid::StaggeredGrid& grid, const FlowMask& mask,
       pressure_(grid.cell_count(), 0.0),
       cell_void_fraction_(grid.cell_count(), 1.0),
       old_cell_void_fraction_(grid.cell_count(), 1.0),
-      cell_viscosity_(grid.cell_count(), settings.viscosity),
+      cell_viscosity_(grid.cell_count(), settings.rheology.viscosity),
       void_fraction_(face_arrays(grid, 1.0)),
       old_void_fraction_(face_arrays(grid, 1.0)),
       drag_coefficient_(face_arrays(grid, 0.0)),
@@ -30,6 +31,8 @@ FluidSolver::FluidSolver(const grid::StaggeredGrid& grid, const FlowMask& mask,
       correction_(grid.cell_count(), 0.0),
       predictor_(settings.momentum_tolerance, settings.max_iterations),
       projection_(settings.pressure_tolerance, settings.max_iterations) {
+  if (settings.rheology.model != "newtonian")
+    rheology_.emplace(settings.rheology);
   mark_outlets(grid_, sides_, mask_);
   set_side_faces();
   predictor_.lay_out(grid_, mask_);
@@ -119,7 +122,17 @@ void FluidSolver::explicit_terms(double dt) {
     source_[c] = (cell_void_fraction_[c] - old_cell_void_fraction_[c]) / dt;
 }
 
+// η(γ̇) of each open cell from the present velocity (a non-Newtonian fluid).
+void FluidSolver::update_viscosity() {
+  if (!rheology_)
+    return;
+  cell_shear_rates(grid_, mask_, sides_, velocity_, shear_rate_);
+  for (std::size_t c = 0; c < cell_viscosity_.size(); ++c)
+    cell_viscosity_[c] = mask_.open_cell[c] ? rheology_->viscosity(shear_rate_[c]) : 0.0;
+}
+
 LinearSolve FluidSolver::step(double dt) {
+  update_viscosity();
   convective_term(grid_, mask_, settings_.convection, settings_.density, old_void_fraction_,
                   velocity_, convection_);
   explicit_terms(dt);

@@ -3,9 +3,13 @@
 // convection (cfd/convection.hpp), the momentum predictor with implicit viscosity and the grains'
 // implicit drag (cfd/momentum_predictor.hpp), and the pressure correction
 // (cfd/pressure_projection.hpp), with the void fraction ε of the grains (1 without them) and the
-// continuity source (ε^{n+1} - ε^n) / Δt. The fluid is Newtonian. The viscous term's transpose
-// part ∇·(ε η ∇uᵀ) is left out: it vanishes where ε η is constant (by continuity), and is of the
-// order of the gradient of ε times the viscous stress elsewhere (docs/cfd.md, "Status").
+// continuity source (ε^{n+1} - ε^n) / Δt. The viscosity is the shared rheology's (materials/
+// rheology.hpp): constant for a Newtonian fluid, else η(γ̇) per cell from the shear rate of the
+// last step's velocity (cfd/cell_shear_rate.hpp; docs/cfd.md, "Non-Newtonian viscosity"). The
+// viscous term's transpose part ∇·(ε η ∇uᵀ) is left out: it vanishes where ε η is constant (by
+// continuity) and in unidirectional flows, and is of the order of the gradient of ε η times the
+// velocity gradient elsewhere (docs/cfd.md, "Status").
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -17,12 +21,18 @@
 #include "core/linear_solve.hpp"
 #include "core/vec.hpp"
 #include "grid/staggered_grid.hpp"
+#include "materials/rheology.hpp"
 
 namespace partimix::cfd {
 
 struct FluidSettings {
   double density = 1000.0;  // ρ [kg/m³]
-  double viscosity = 1e-3;  // μ [Pa s]
+  // η(γ̇); by default water's μ = 1e-3 Pa s.
+  materials::RheologyConfig rheology = [] {
+    materials::RheologyConfig water;
+    water.viscosity = 1e-3;
+    return water;
+  }();
   Vec3 gravity = Vec3::Zero();
   ConvectionScheme convection = ConvectionScheme::tvd;
   double cfl = 0.4;                  // C_cfl
@@ -67,6 +77,8 @@ class FluidSolver {
   const FaceArrays& drag_coefficient() const { return drag_coefficient_; }
   const FaceArrays& grain_source() const { return grain_source_; }
   const FluidSettings& settings() const { return settings_; }
+  // η per cell [Pa s], as the last step used it (the rheology's at the shear rate then).
+  const std::vector<double>& viscosity() const { return cell_viscosity_; }
 
   // The mean of the faces on the cell's two sides along each axis.
   Vec3 cell_velocity(int i, int j, int k) const;
@@ -76,6 +88,7 @@ class FluidSolver {
   void faces_from_cells(const std::vector<double>& cells, FaceArrays& faces) const;
   void explicit_terms(double dt);
   void extrapolate_to_outlets();
+  void update_viscosity();
 
   grid::StaggeredGrid grid_;
   FlowMask mask_;
@@ -96,6 +109,8 @@ class FluidSolver {
   FaceArrays coefficient_;
   std::vector<double> source_;
   std::vector<double> correction_;
+  std::optional<materials::BoundedRheology> rheology_;  // none: Newtonian
+  std::vector<double> shear_rate_;
   MomentumPredictor predictor_;
   PressureProjection projection_;
   LinearSolve momentum_solve_;

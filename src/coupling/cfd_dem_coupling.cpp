@@ -108,8 +108,11 @@ CfdDemCoupling::Sample CfdDemCoupling::sample(std::size_t p, bool with_pressure)
     return s;
   }
   s.void_fraction = 0.0;
-  for (const KernelWeights::Weight& w : cells)
+  s.viscosity = 0.0;
+  for (const KernelWeights::Weight& w : cells) {
     s.void_fraction += w.weight * void_fraction_[w.cell];
+    s.viscosity += w.weight * fluid.viscosity()[w.cell];
+  }
   for (int a = 0; a < fluid.grid().dimensions(); ++a)
     for (const FaceWeights::Weight& w : face_weights_.of(a, p)) {
       s.velocity[a] += w.weight * fluid.velocity()[a][w.face];
@@ -162,8 +165,7 @@ void CfdDemCoupling::set_drag() {
     if (!s.mapped)
       continue;
     const Vec3 slip = s.velocity - store.velocity()[p];
-    const DragState state{s.void_fraction, slip.norm(), diameters_[id], fluid.density,
-                          fluid.viscosity};
+    const DragState state{s.void_fraction, slip.norm(), diameters_[id], fluid.density, s.viscosity};
     drag_[p] = law_->coefficient(state) * volumes_[id];
   }
 }

@@ -52,7 +52,8 @@ class CfdDemCoupling final : public Coupling {
     Vec3 velocity = Vec3::Zero();
     Vec3 pressure_gradient = Vec3::Zero();
     double void_fraction = 1.0;
-    bool mapped = true;  // false: the grain lies in no open cell
+    double viscosity = 0.0;  // η of the fluid's cells around the grain
+    bool mapped = true;      // false: the grain lies in no open cell
   };
   Sample sample(std::size_t p, bool with_pressure) const;
   void pressure_gradients();

@@ -12,6 +12,7 @@
 
 #include "cfd/fluid_solver.hpp"
 #include "grid/staggered_grid.hpp"
+#include "support/fluid_steps.hpp"
 
 namespace partimix::cfd {
 namespace {
@@ -28,15 +29,10 @@ TEST(InletOutlet, ChannelBecomesPoiseuilleFlowDownstream) {
   sides[1].outlet = true;                   // x+
   FluidSettings settings;
   settings.density = 1.0;
-  settings.viscosity = kNu;
+  settings.rheology.viscosity = kNu;
   settings.max_dt = 0.05;
   FluidSolver fluid(grid, open_mask(grid), sides, settings);
-  double t = 0.0;
-  while (t < 24.0) {
-    const double dt = fluid.stable_dt();
-    ASSERT_TRUE(fluid.step(dt).converged);
-    t += dt;
-  }
+  test_support::step_fluid_until(fluid, 24.0);
   double in = 0.0;
   double out = 0.0;
   for (int j = 0; j < kCells; ++j) {
@@ -61,7 +57,8 @@ TEST(InletOutlet, ChannelBecomesPoiseuilleFlowDownstream) {
   EXPECT_NEAR(peak, 1.5, 0.015);
   EXPECT_NEAR(gradient, poiseuille, 0.02 * std::abs(poiseuille));
   // The outlet's cells lie half a cell upstream of p = 0.
-  EXPECT_NEAR(mean_pressure(8 * kCells - 1), -0.5 * h * poiseuille, 0.05 * std::abs(h * poiseuille));
+  EXPECT_NEAR(mean_pressure(8 * kCells - 1), -0.5 * h * poiseuille,
+              0.05 * std::abs(h * poiseuille));
 }
 
 }  // namespace

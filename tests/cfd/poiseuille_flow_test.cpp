@@ -12,6 +12,7 @@
 
 #include "cfd/fluid_solver.hpp"
 #include "grid/staggered_grid.hpp"
+#include "support/fluid_steps.hpp"
 
 namespace partimix::cfd {
 namespace {
@@ -28,16 +29,11 @@ double steady_error(int cells) {
                                  {true, false, false}, 1e6);
   FluidSettings settings;
   settings.density = 1.0;
-  settings.viscosity = kNu;
+  settings.rheology.viscosity = kNu;
   settings.gravity = Vec3(kForce, 0.0, 0.0);
   settings.max_dt = 0.05;
   FluidSolver fluid(grid, open_mask(grid), BoxSides{}, settings);
-  double t = 0.0;
-  while (t < 3.0 * kHeight * kHeight / kNu) {
-    const double dt = fluid.stable_dt();
-    EXPECT_TRUE(fluid.step(dt).converged);
-    t += dt;
-  }
+  test_support::step_fluid_until(fluid, 3.0 * kHeight * kHeight / kNu);
   double error = 0.0;
   for (int j = 0; j < cells; ++j) {
     const double y = (j + 0.5) * h;
