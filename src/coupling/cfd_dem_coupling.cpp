@@ -65,6 +65,8 @@ void CfdDemCoupling::before_method(std::size_t m, double /*time*/, double dt) {
 // step).
 void CfdDemCoupling::exchange_with_fluid(double dt) {
   deferred_.assign(grains_.particles().size(), Vec3::Zero());
+  if (started_)
+    follow_grains(last_dt_);
   if (started_ && settings_.two_way)
     settle_last_step(last_dt_);
   map_grains();
@@ -122,20 +124,35 @@ CfdDemCoupling::Sample CfdDemCoupling::sample(std::size_t p, bool with_pressure)
   return s;
 }
 
-// D_i = J_i - Δt (K_i (u_i - v_i) + f_i) for each grain of the last step (rows by id: the DEM
-// sorts its grains), u_i the fluid's velocity the grain stepped with, v_i its velocity the
-// fluid's step used, f_i the held force other than the drag: the impulse the grain received less
-// what the fluid's step gave it (docs/cfd-dem.md, "Momentum"). With `gradient` f_i = -V_i ∇p^{n+1}
-// is what the fluid's step carried as -ε ∇p^{n+1}, gathered with the same weights.
-void CfdDemCoupling::settle_last_step(double dt) {
+// Each grain's row of the last step by its id (the DEM sorts its grains), the fluid's velocity
+// it stepped with, and its acceleration (v_i - v_i^{n-1}) / Δt over the step.
+void CfdDemCoupling::follow_grains(double dt) {
   const ParticleStore& store = grains_.particles();
   row_of_id_.resize(ids_.size());
   for (std::size_t r = 0; r < ids_.size(); ++r)
     row_of_id_[static_cast<std::size_t>(ids_[r])] = r;
+  previous_fluid_velocities_.resize(store.size());
+  accelerations_.resize(store.size());
+  for (std::size_t p = 0; p < store.size(); ++p) {
+    const std::size_t r = row_of_id_[static_cast<std::size_t>(store.id()[p])];
+    previous_fluid_velocities_[p] = fluid_velocities_[r];
+    accelerations_[p] = (store.velocity()[p] - velocities_[r]) / dt;
+  }
+}
+
+// D_i = J_i - Δt (K_i (u_i - v_i) + f_i) for each grain of the last step (rows by id: the DEM
+// sorts its grains), u_i the fluid's velocity the grain stepped with, v_i its velocity the
+// fluid's step used, f_i the held force other than the drag: the impulse the grain received less
+// what the fluid's step gave it (docs/cfd-dem.md, "Momentum"). With `gradient` f_i = -V_i ∇p^{n+1}
+// is what the fluid's step carried as -ε ∇p^{n+1}, gathered with the same weights; the virtual
+// mass, which the fluid's step did not carry, stays in D_i and the fluid gives it over the next
+// step. Rows as follow_grains() found them.
+void CfdDemCoupling::settle_last_step(double dt) {
+  const ParticleStore& store = grains_.particles();
   for (std::size_t p = 0; p < store.size(); ++p) {
     const std::size_t r = row_of_id_[static_cast<std::size_t>(store.id()[p])];
     const Vec3 drag = drag_[r] * (fluid_velocities_[r] - velocities_[r]);
-    deferred_[p] = (*external_.impulse)[p] - dt * (drag + other_force_[r]);
+    deferred_[p] = (*external_.impulse)[p] - dt * (drag + pressure_force_[r]);
   }
 }
 
@@ -180,15 +197,17 @@ void CfdDemCoupling::set_grain_forces(double dt) {
   ids_.assign(store.id().begin(), store.id().end());
   fluid_velocities_.assign(store.size(), Vec3::Zero());
   other_force_.assign(store.size(), Vec3::Zero());
+  pressure_force_.assign(store.size(), Vec3::Zero());
   for (std::size_t p = 0; p < store.size(); ++p) {
     const auto id = static_cast<std::size_t>(store.id()[p]);
     const Sample s = sample(p, true);
     if (s.mapped) {
       fluid_velocities_[p] = s.velocity;
       if (settings_.pressure_force == PressureForce::gradient)
-        other_force_[p] = -volumes_[id] * s.pressure_gradient;
+        pressure_force_[p] = -volumes_[id] * s.pressure_gradient;
       else if (settings_.pressure_force == PressureForce::buoyancy)
-        other_force_[p] = -density * volumes_[id] * gravity_;
+        pressure_force_[p] = -density * volumes_[id] * gravity_;
+      other_force_[p] = pressure_force_[p] + virtual_mass(p, id, s.velocity, dt);
     }
     if (sub_dt * drag_[p] > store.mass()[p])
       throw RunError(fmt::format(
@@ -200,6 +219,18 @@ void CfdDemCoupling::set_grain_forces(double dt) {
     (*external_.drag)[p] = drag_[p];
     (*external_.impulse)[p] = Vec3::Zero();
   }
+}
+
+// C_vm ρ V_i ((u_i^{n+1} - u_i^n) / Δt - a_i), the relative acceleration along the grain's path
+// over the last step (seed 004's F_x; docs/cfd-dem.md, "The forces on a grain"); none in the first
+// step.
+Vec3 CfdDemCoupling::virtual_mass(std::size_t p, std::size_t id, const Vec3& fluid_velocity,
+                                  double dt) const {
+  if (!settings_.virtual_mass || accelerations_.empty())
+    return Vec3::Zero();
+  const double mass =
+      settings_.virtual_mass_coefficient * fluid_.fluid().settings().density * volumes_[id];
+  return mass * ((fluid_velocity - previous_fluid_velocities_[p]) / dt - accelerations_[p]);
 }
 
 // K_f = Σ_i w_if K_i / V_f and S_e,f = Σ_i w_if (K_i v_i - D_i / Δt) / V_f.
@@ -235,6 +266,7 @@ void CfdDemCoupling::save(StateArchive& archive, const std::string& prefix) cons
   archive.put_vectors(prefix + "velocities", velocities_);
   archive.put_vectors(prefix + "fluid_velocities", fluid_velocities_);
   archive.put_vectors(prefix + "other_force", other_force_);
+  archive.put_vectors(prefix + "pressure_force", pressure_force_);
 }
 
 // What the last step used of each grain, by the grains' order when it began (ids).
@@ -251,9 +283,11 @@ void CfdDemCoupling::restore(const StateArchive& archive, const std::string& pre
   velocities_ = archive.vectors(prefix + "velocities");
   fluid_velocities_ = archive.vectors(prefix + "fluid_velocities");
   other_force_ = archive.vectors(prefix + "other_force");
+  pressure_force_ = archive.vectors(prefix + "pressure_force");
   const std::size_t n = grains_.particles().size();
   const bool fits = ids_.size() == n && drag_.size() == n && velocities_.size() == n &&
-                    fluid_velocities_.size() == n && other_force_.size() == n;
+                    fluid_velocities_.size() == n && other_force_.size() == n &&
+                    pressure_force_.size() == n;
   if (!fits || std::any_of(ids_.begin(), ids_.end(), [n](std::int64_t id) {
         return id < 0 || static_cast<std::size_t>(id) >= n;
       }))

@@ -59,8 +59,10 @@ class CfdDemCoupling final : public Coupling {
   void pressure_gradients();
   void map_grains();
   void settle_last_step(double dt);
+  void follow_grains(double dt);
   void set_drag();
   void set_grain_forces(double dt);
+  Vec3 virtual_mass(std::size_t p, std::size_t id, const Vec3& fluid_velocity, double dt) const;
   void set_fluid_source(double dt);
 
   cfd::CfdSolver& fluid_;
@@ -89,6 +91,11 @@ class CfdDemCoupling final : public Coupling {
   std::vector<std::int64_t> ids_;
   std::vector<Vec3> fluid_velocities_;
   std::vector<Vec3> other_force_;
+  std::vector<Vec3> pressure_force_;  // the part of other_force_ the fluid's step gave
+  // Before the fluid's step, in the grains' present order: the fluid's velocity at each grain as
+  // it last stepped with, and its acceleration over that step (the virtual mass).
+  std::vector<Vec3> previous_fluid_velocities_;
+  std::vector<Vec3> accelerations_;
   std::vector<std::size_t> row_of_id_;
   bool started_ = false;
   double last_dt_ = 0.0;

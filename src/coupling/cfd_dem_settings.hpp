@@ -18,6 +18,10 @@ struct CfdDemSettings {
   // false: one-way, the grains feel the fluid but the fluid neither sees their volume (ε = 1)
   // nor gets their drag back.
   bool two_way = true;
+  // The virtual-mass force C_vm ρ V_i (d(u - v)/dt)_i on each grain (seed 004's F_x), lagged by a
+  // step; stable while C_vm ρ / ρ_p < 1.
+  bool virtual_mass = false;
+  double virtual_mass_coefficient = 0.5;
   int grain_sub_steps = 1;  // the DEM's steps per fluid step (time.sub_steps.dem)
 };
 

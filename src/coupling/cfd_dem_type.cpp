@@ -2,9 +2,11 @@
 
 #include <fmt/format.h>
 
+#include "cfd/cfd_section.hpp"
 #include "cfd/cfd_solver.hpp"
 #include "coupling/cfd_dem_coupling.hpp"
 #include "coupling/drag_law.hpp"
+#include "dem/dem_section.hpp"
 #include "dem/dem_solver.hpp"
 
 namespace partimix::coupling {
@@ -15,6 +17,20 @@ std::size_t method_index(const io::Case& the_case, const std::string& name) {
     if (the_case.methods[m].name == name)
       return m;
   throw std::logic_error("the case runs no method " + name);
+}
+
+// The lagged virtual mass is stable while C_vm ρ / ρ_p < 1 for every species (docs/cfd-dem.md,
+// "The forces on a grain").
+void check_virtual_mass(io::Reader& item, const io::Case& the_case, double coefficient) {
+  const double density = the_case.section<cfd::CfdSection>("cfd").config.settings.density;
+  for (const dem::Species& species : the_case.section<dem::DemSection>("dem").config.species) {
+    const double ratio = coefficient * density / species.density;
+    if (!(ratio < 1.0))
+      throw item.error("virtual_mass",
+                       fmt::format("C_vm rho / rho_p = {:.3g} for species '{}': the lagged "
+                                   "virtual mass needs it below 1",
+                                   ratio, species.name));
+  }
 }
 
 }  // namespace
@@ -48,6 +64,11 @@ std::shared_ptr<io::CouplingSection> CfdDemType::read(io::Reader& item,
   if (!(s.min_void_fraction < 1.0))
     throw item.error("min_void_fraction", "must lie in (0, 1)");
   s.two_way = item.optional<bool>("two_way", s.two_way);
+  s.virtual_mass = item.optional<bool>("virtual_mass", s.virtual_mass);
+  s.virtual_mass_coefficient = item.optional<double>("virtual_mass_coefficient",
+                                                     s.virtual_mass_coefficient, io::kNonNegative);
+  if (s.virtual_mass)
+    check_virtual_mass(item, the_case, s.virtual_mass_coefficient);
   s.grain_sub_steps = grains->sub_steps;
   return section;
 }
