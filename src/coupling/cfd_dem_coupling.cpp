@@ -160,11 +160,18 @@ void CfdDemCoupling::settle_last_step(double dt) {
 void CfdDemCoupling::map_grains() {
   const ParticleStore& store = grains_.particles();
   const cfd::FluidSolver& fluid = fluid_.fluid();
-  cell_weights_.build(fluid.grid(), fluid.mask(), store.position(), radius_);
-  face_weights_.build(fluid.grid(), fluid.mask(), cell_weights_, store.size());
   row_volumes_.resize(store.size());
-  for (std::size_t p = 0; p < store.size(); ++p)
-    row_volumes_[p] = volumes_[static_cast<std::size_t>(store.id()[p])];
+  row_radii_.resize(store.size());
+  for (std::size_t p = 0; p < store.size(); ++p) {
+    const auto id = static_cast<std::size_t>(store.id()[p]);
+    row_volumes_[p] = volumes_[id];
+    row_radii_[p] = 0.5 * diameters_[id];
+  }
+  if (settings_.divided)
+    cell_weights_.build_divided(fluid.grid(), fluid.mask(), store.position(), row_radii_);
+  else
+    cell_weights_.build(fluid.grid(), fluid.mask(), store.position(), radius_);
+  face_weights_.build(fluid.grid(), fluid.mask(), cell_weights_, store.size());
   clipped_ = void_fraction(fluid.grid(), cell_weights_, row_volumes_, settings_.min_void_fraction,
                            void_fraction_);
 }

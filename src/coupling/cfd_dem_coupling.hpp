@@ -80,6 +80,7 @@ class CfdDemCoupling final : public Coupling {
   FaceWeights face_weights_;
   std::vector<double> void_fraction_;  // the cells', as last mapped
   std::vector<double> row_volumes_;    // V_i in the grains' order when mapped
+  std::vector<double> row_radii_;      // the radius of V_i's sphere, likewise
   cfd::FaceArrays gradient_;           // (∇p)_f before the grains step
   std::size_t clipped_ = 0;
   // Per grain in the order of the last mapping (the grains do not move before they step):

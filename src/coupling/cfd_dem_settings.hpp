@@ -13,6 +13,7 @@ enum class PressureForce { gradient, buoyancy, none };
 struct CfdDemSettings {
   std::string drag = "gidaspow";  // a name of drag_law_registry()
   PressureForce pressure_force = PressureForce::gradient;
+  bool divided = false;                 // the divided mapping, not the kernel (kernel_weights.hpp)
   std::optional<double> kernel_radius;  // b [m]; none: max(2 d_max, 1.5 h_max)
   double min_void_fraction = 0.3;
   // false: one-way, the grains feel the fluid but the fluid neither sees their volume (ε = 1)

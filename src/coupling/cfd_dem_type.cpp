@@ -58,6 +58,7 @@ std::shared_ptr<io::CouplingSection> CfdDemType::read(io::Reader& item,
   s.pressure_force = pressure == "gradient"   ? PressureForce::gradient
                      : pressure == "buoyancy" ? PressureForce::buoyancy
                                               : PressureForce::none;
+  s.divided = item.choice("void_fraction", "kernel", {"kernel", "divided"}) == "divided";
   s.kernel_radius = item.automatic<double>("kernel_radius", io::kPositive);
   s.min_void_fraction =
       item.optional<double>("min_void_fraction", s.min_void_fraction, io::kPositive);

@@ -90,22 +90,80 @@ void KernelWeights::add_grain(const grid::StaggeredGrid& grid, const cfd::FlowMa
     ++unmapped_;
 }
 
-bool KernelWeights::add_holding_cell(const grid::StaggeredGrid& grid, const cfd::FlowMask& mask,
-                                     const Vec3& x) {
+std::int64_t KernelWeights::holding_cell(const grid::StaggeredGrid& grid, const cfd::FlowMask& mask,
+                                         const Vec3& x) {
   std::array<int, 3> c{0, 0, 0};
   for (int axis = 0; axis < grid.dimensions(); ++axis) {
     const double s = (x[axis] - grid.origin()[axis]) / grid.spacing(axis);
     if (!(std::abs(s) < 1e9))
-      return false;
+      return -1;
     c[axis] = grid.wrap_cell(axis, static_cast<int>(std::floor(s)));
     if (c[axis] < 0)
-      return false;
+      return -1;
   }
   const std::size_t cell = grid.cell(c[0], c[1], c[2]);
-  if (!mask.open_cell[cell])
+  return mask.open_cell[cell] ? static_cast<std::int64_t>(cell) : -1;
+}
+
+bool KernelWeights::add_holding_cell(const grid::StaggeredGrid& grid, const cfd::FlowMask& mask,
+                                     const Vec3& x) {
+  const std::int64_t cell = holding_cell(grid, mask, x);
+  if (cell < 0)
     return false;
   weights_.push_back({static_cast<std::uint32_t>(cell), 1.0});
   return true;
+}
+
+void KernelWeights::build_divided(const grid::StaggeredGrid& grid, const cfd::FlowMask& mask,
+                                  std::span<const Vec3> positions, std::span<const double> radii) {
+  start_.resize(positions.size() + 1);
+  start_[0] = 0;
+  weights_.clear();
+  unmapped_ = 0;
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    add_divided(grid, mask, positions[i], radii[i]);
+    start_[i + 1] = weights_.size();
+  }
+}
+
+// The sub-cubes' centres x + r ((2k + 1) / 5 - 1) along each axis (the grain's plane in 2D), each
+// inside the sphere adding one share to its holding open cell (one entry per cell).
+void KernelWeights::add_divided(const grid::StaggeredGrid& grid, const cfd::FlowMask& mask,
+                                const Vec3& x, double radius) {
+  constexpr int kCuts = 5;
+  const std::size_t first = weights_.size();
+  if (!x.allFinite()) {
+    ++unmapped_;
+    return;
+  }
+  const int depth = grid.dimensions() == 3 ? kCuts : 1;
+  int shares = 0;
+  for (int k = 0; k < depth; ++k)
+    for (int j = 0; j < kCuts; ++j)
+      for (int i = 0; i < kCuts; ++i) {
+        const auto offset = [&](int n) { return radius * ((2.0 * n + 1.0) / kCuts - 1.0); };
+        const Vec3 d(offset(i), offset(j), depth == 1 ? 0.0 : offset(k));
+        if (d.squaredNorm() > radius * radius)
+          continue;
+        const std::int64_t cell = holding_cell(grid, mask, x + d);
+        if (cell < 0)
+          continue;
+        ++shares;
+        auto row = std::span(weights_).subspan(first);
+        auto found = std::find_if(row.begin(), row.end(), [cell](const Weight& w) {
+          return w.cell == static_cast<std::uint32_t>(cell);
+        });
+        if (found != row.end())
+          found->weight += 1.0;
+        else
+          weights_.push_back({static_cast<std::uint32_t>(cell), 1.0});
+      }
+  if (shares == 0) {
+    ++unmapped_;
+    return;
+  }
+  for (std::size_t e = first; e < weights_.size(); ++e)
+    weights_[e].weight /= shares;
 }
 
 }  // namespace partimix::coupling

@@ -107,6 +107,7 @@ TEST(CfdDemCoupling, MomentumOfFluidAndGrainsIsKeptToRoundOff) {
   momentum_is_kept("{type: cfd_dem}");
   // The virtual mass, which the fluid's step does not carry, comes back through D.
   momentum_is_kept("{type: cfd_dem, virtual_mass: true}");
+  momentum_is_kept("{type: cfd_dem, void_fraction: divided}");
 }
 
 TEST(CfdDemCoupling, VoidFractionHoldsTheGrainsVolume) {

@@ -38,16 +38,27 @@ void scatter(std::size_t count, double d, const Vec3& lo, const Vec3& hi, unsign
   }
 }
 
+// 10 x 8 x 6 cells of 1 cm, periodic along x.
+StaggeredGrid periodic_box() {
+  return StaggeredGrid(3, Vec3::Zero(), {10, 8, 6}, Vec3(0.01, 0.01, 0.01), {true, false, false},
+                       1e6);
+}
+
+// The open cells of `grid` but its floor row (y = 0), which is solid.
+cfd::FlowMask floor_blocked(const StaggeredGrid& grid) {
+  cfd::FlowMask mask = cfd::open_mask(grid);
+  for (int i = 0; i < grid.cells(0); ++i)
+    for (int k = 0; k < grid.cells(2); ++k)
+      mask.open_cell[grid.cell(i, 0, k)] = 0;
+  cfd::open_faces(grid, mask);
+  return mask;
+}
+
 // Grains everywhere in a box with a blocked slab and a periodic axis: the volume is kept, and
 // nothing lands on the blocked cells.
 TEST(VoidFraction, KeepsTheGrainsVolumeAgainstWallsAndAcrossAPeriodicSide) {
-  const StaggeredGrid grid(3, Vec3::Zero(), {10, 8, 6}, Vec3(0.01, 0.01, 0.01),
-                           {true, false, false}, 1e6);
-  cfd::FlowMask mask = cfd::open_mask(grid);
-  for (int i = 0; i < 10; ++i)
-    for (int k = 0; k < 6; ++k)
-      mask.open_cell[grid.cell(i, 0, k)] = 0;  // the floor row is solid
-  cfd::open_faces(grid, mask);
+  const StaggeredGrid grid = periodic_box();
+  const cfd::FlowMask mask = floor_blocked(grid);
   std::vector<Vec3> positions;
   std::vector<double> volumes;
   scatter(300, 0.004, Vec3(0.0, 0.01, 0.0), Vec3(0.1, 0.08, 0.06), 1, positions, volumes);
@@ -147,6 +158,42 @@ TEST(VoidFraction, CountsGrainsInNoOpenCellAndClippedCells) {
   const std::vector<double> volumes{1.0, 1.0, 1.0, 2e-4};
   EXPECT_EQ(void_fraction(grid, weights, volumes, 0.3, eps), 1u);
   EXPECT_EQ(eps[grid.cell(2, 2, 0)], 0.3);
+}
+
+// The divided mapping: the volume kept against the blocked floor row and across the periodic
+// side, a grain inside one cell all in it, one astride a face shared by its sub-cubes.
+TEST(VoidFraction, DividedMappingKeepsTheVolumeAndSharesByParts) {
+  const StaggeredGrid grid = periodic_box();
+  const cfd::FlowMask mask = floor_blocked(grid);
+  std::vector<Vec3> positions;
+  std::vector<double> volumes;
+  scatter(300, 0.004, Vec3(0.0, 0.01, 0.0), Vec3(0.1, 0.08, 0.06), 1, positions, volumes);
+  const std::vector<double> radii(positions.size(), 0.002);
+  KernelWeights weights;
+  weights.build_divided(grid, mask, positions, radii);
+  EXPECT_EQ(weights.unmapped(), 0u);
+  std::vector<double> eps;
+  void_fraction(grid, weights, volumes, 0.0, eps);
+  double total = 0.0;
+  for (const double v : volumes)
+    total += v;
+  EXPECT_NEAR(grains_on_grid(grid, eps), total, 1e-12 * total);
+  KernelWeights inside;
+  inside.build_divided(grid, mask, std::vector<Vec3>{Vec3(0.045, 0.045, 0.035)},
+                       std::vector<double>{0.002});
+  ASSERT_EQ(inside.of(0).size(), 1u);
+  EXPECT_EQ(inside.of(0)[0].weight, 1.0);
+  // Centred 1 mm below the face x = 0.05: of the 81 sub-cubes inside the sphere (21 in each of the
+  // three middle layers along x, 9 in each outer one) the outer layer at +1.6 mm lies above it.
+  KernelWeights astride;
+  astride.build_divided(grid, mask, std::vector<Vec3>{Vec3(0.049, 0.045, 0.035)},
+                        std::vector<double>{0.002});
+  ASSERT_EQ(astride.of(0).size(), 2u);
+  double above = 0.0;
+  for (const KernelWeights::Weight& w : astride.of(0))
+    if (grid.cell_coordinates(w.cell)[0] == 5)
+      above = w.weight;
+  EXPECT_DOUBLE_EQ(above, 9.0 / 81.0);
 }
 
 }  // namespace
