@@ -1,5 +1,7 @@
 #include "coupling/cfd_dem_type.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "cfd/cfd_section.hpp"
@@ -31,6 +33,24 @@ void check_virtual_mass(io::Reader& item, const io::Case& the_case, double coeff
                                    "virtual mass needs it below 1",
                                    ratio, species.name));
   }
+}
+
+// The weights a mapping may hold, grains times the cells within a kernel's reach, are bounded by
+// limits.grid_nodes, so a kernel as wide as the box cannot exhaust the memory or hang the run.
+void check_kernel_size(const io::Case& the_case, const io::CouplingSpec& spec,
+                       const cfd::CfdSolver& fluid, std::size_t grains, double radius) {
+  const grid::StaggeredGrid& grid = fluid.fluid().grid();
+  double cells = 1.0;
+  for (int axis = 0; axis < grid.dimensions(); ++axis)
+    cells *=
+        std::min(2.0 * radius / grid.spacing(axis) + 1.0, static_cast<double>(grid.cells(axis)));
+  const double weights = cells * static_cast<double>(grains);
+  if (weights > the_case.limits.grid_nodes)
+    throw io::case_error(the_case, spec.key + ".kernel_radius",
+                         fmt::format("a kernel {:.3g} m wide reaches {:.3g} cells per grain, "
+                                     "{:.3g} weights for the {} grains: more than "
+                                     "limits.grid_nodes = {:.3g}; narrow it or coarsen the cells",
+                                     radius, cells, weights, grains, the_case.limits.grid_nodes));
 }
 
 }  // namespace
@@ -81,7 +101,9 @@ std::unique_ptr<Coupling> CfdDemType::build(const io::Case& the_case, const io::
   const std::size_t g = method_index(the_case, "dem");
   auto& fluid = dynamic_cast<cfd::CfdSolver&>(*methods[f].solver);
   auto& grains = dynamic_cast<dem::DemSolver&>(*methods[g].solver);
-  return std::make_unique<CfdDemCoupling>(fluid, f, grains, g, settings, the_case.gravity);
+  auto coupling = std::make_unique<CfdDemCoupling>(fluid, f, grains, g, settings, the_case.gravity);
+  check_kernel_size(the_case, spec, fluid, grains.particles().size(), coupling->kernel_radius());
+  return coupling;
 }
 
 }  // namespace partimix::coupling

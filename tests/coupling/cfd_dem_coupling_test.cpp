@@ -199,6 +199,10 @@ TEST(CfdDemCoupling, CaseErrorsNameTheirKey) {
             "couplings[0].min_void_fraction");
   EXPECT_EQ(key_of_error(periodic_box("{type: cfd_dem, virtual_mass_coefficient: -1}")),
             "couplings[0].virtual_mass_coefficient");
+  // 8³ cells within reach of each of 60 grains, 30,720 weights, over a limit of 10,000.
+  EXPECT_EQ(key_of_error(periodic_box("{type: cfd_dem, kernel_radius: 1.0e9}") +
+                         "limits: {grid_nodes: 10000}\n"),
+            "couplings[0].kernel_radius");
 }
 
 }  // namespace
