@@ -5,6 +5,7 @@
 
 #include "cfd/cell_shear_rate.hpp"
 #include "cfd/face_stencil.hpp"
+#include "cfd/transpose_viscous.hpp"
 
 namespace partimix::cfd {
 
@@ -24,6 +25,7 @@ FluidSolver::FluidSolver(const grid::StaggeredGrid& grid, const FlowMask& mask,
       drag_coefficient_(face_arrays(grid, 0.0)),
       grain_source_(face_arrays(grid, 0.0)),
       convection_(face_arrays(grid, 0.0)),
+      transpose_(face_arrays(grid, 0.0)),
       diagonal_(face_arrays(grid, 0.0)),
       rhs_(face_arrays(grid, 0.0)),
       coefficient_(face_arrays(grid, 0.0)),
@@ -98,8 +100,9 @@ void FluidSolver::start_void_fraction(std::span<const double> cells) {
   set_void_fraction(cells);
 }
 
-// D_f = ρ ε_f^{n+1} / Δt + K_f, r_f = ρ ε_f^n u_f / Δt - C_f - ε_f^{n+1} (p_above - p_below) / h
-// + ε_f^{n+1} ρ g + S_e,f, and the projection's a_f = ε_f^{n+1} / D_f (Δt / ρ without grains).
+// D_f = ρ ε_f^{n+1} / Δt + K_f, r_f = ρ ε_f^n u_f / Δt - C_f + T_f - ε_f^{n+1} (p_above -
+// p_below) / h + ε_f^{n+1} ρ g + S_e,f, and the projection's a_f = ε_f^{n+1} / D_f (Δt / ρ without
+// grains).
 void FluidSolver::explicit_terms(double dt) {
   const double rho = settings_.density;
   for (int a = 0; a < grid_.dimensions(); ++a)
@@ -110,8 +113,8 @@ void FluidSolver::explicit_terms(double dt) {
       const double gradient = gradient_across(grid_, a, f, pressure_);
       diagonal_[a][index] = rho * eps / dt + drag_coefficient_[a][index];
       rhs_[a][index] = rho * old_void_fraction_[a][index] * velocity_[a][index] / dt -
-                       convection_[a][index] - eps * gradient + eps * rho * settings_.gravity[a] +
-                       grain_source_[a][index];
+                       convection_[a][index] + transpose_[a][index] - eps * gradient +
+                       eps * rho * settings_.gravity[a] + grain_source_[a][index];
       coefficient_[a][index] = eps / diagonal_[a][index];
     });
   for (int a = 0; a < grid_.dimensions(); ++a)
@@ -135,6 +138,7 @@ LinearSolve FluidSolver::step(double dt) {
   update_viscosity();
   convective_term(grid_, mask_, settings_.convection, settings_.density, old_void_fraction_,
                   velocity_, convection_);
+  transpose_viscous_term(grid_, mask_, cell_void_fraction_, cell_viscosity_, velocity_, transpose_);
   explicit_terms(dt);
   momentum_solve_ = predictor_.solve(grid_, sides_, cell_void_fraction_, cell_viscosity_, diagonal_,
                                      rhs_, velocity_);

@@ -6,9 +6,7 @@
 // continuity source (ε^{n+1} - ε^n) / Δt. The viscosity is the shared rheology's (materials/
 // rheology.hpp): constant for a Newtonian fluid, else η(γ̇) per cell from the shear rate of the
 // last step's velocity (cfd/cell_shear_rate.hpp; docs/cfd.md, "Non-Newtonian viscosity"). The
-// viscous term's transpose part ∇·(ε η ∇uᵀ) is left out: it vanishes where ε η is constant (by
-// continuity) and in unidirectional flows, and is of the order of the gradient of ε η times the
-// velocity gradient elsewhere (docs/cfd.md, "Status").
+// viscous term's transpose part ∇·(ε η ∇uᵀ) is explicit (cfd/transpose_viscous.hpp).
 #include <optional>
 #include <span>
 #include <vector>
@@ -104,6 +102,7 @@ class FluidSolver {
   FaceArrays drag_coefficient_;
   FaceArrays grain_source_;
   FaceArrays convection_;
+  FaceArrays transpose_;
   FaceArrays diagonal_;
   FaceArrays rhs_;
   FaceArrays coefficient_;
