@@ -63,26 +63,21 @@ analyses:
 )";
 }
 
-test_support::CaseRun run(const io::Case& the_case, const std::filesystem::path& out,
-                          const StateArchive* checkpoint = nullptr) {
-  Simulation simulation = build_simulation(the_case, {checkpoint != nullptr});
-  return test_support::run_simulation(the_case, simulation, out, checkpoint);
-}
-
 TEST(ResumeInProcess, TheSecondHalfFromACheckpointIsTheRunThatWentThrough) {
   const TempDir dir;
   const io::Case whole = test_support::load_case_text(dir, tank("0.006"));
-  const test_support::CaseRun through = run(whole, dir / "whole");
+  const test_support::CaseRun through = test_support::run_case_into(whole, dir / "whole");
   ASSERT_EQ(through.summary.status, "completed");
 
   // Stopped at 0.0035 s: its newest checkpoint (0.003 s) lies before the step cut short to
   // end on time, so the run from it is the one that went through.
   const io::Case half = test_support::load_case_text(dir, tank("0.0035"));
-  ASSERT_EQ(run(half, dir / "parts").summary.status, "completed");
+  ASSERT_EQ(test_support::run_case_into(half, dir / "parts").summary.status, "completed");
   std::filesystem::path used;
   const StateArchive checkpoint =
       io::CheckpointFolder(dir / "parts" / "checkpoints").read_latest(&used);
-  const test_support::CaseRun resumed = run(whole, dir / "parts", &checkpoint);
+  const test_support::CaseRun resumed =
+      test_support::run_case_into(whole, dir / "parts", &checkpoint);
   ASSERT_EQ(resumed.summary.status, "completed");
   // This process's share: the steps after the checkpoint's, not the whole run's.
   EXPECT_EQ(resumed.summary.steps, through.summary.steps);
@@ -140,12 +135,8 @@ analyses:
 
 TEST(ResumeInProcess, EllipsoidsResumeBitForBit) {
   const TempDir dir;
-  const io::Case whole = test_support::load_case_text(dir, ellipsoids("0.1"));
-  ASSERT_EQ(run(whole, dir / "whole").summary.status, "completed");
-  const io::Case half = test_support::load_case_text(dir, ellipsoids("0.065"));
-  ASSERT_EQ(run(half, dir / "parts").summary.status, "completed");
-  const StateArchive checkpoint = io::CheckpointFolder(dir / "parts" / "checkpoints").read_latest();
-  ASSERT_EQ(run(whole, dir / "parts", &checkpoint).summary.status, "completed");
+  ASSERT_NO_FATAL_FAILURE(
+      test_support::run_through_and_resumed(dir, ellipsoids("0.1"), ellipsoids("0.065")));
   EXPECT_EQ(read_file(dir / "whole" / "series.csv"), read_file(dir / "parts" / "series.csv"));
   for (int k = 0; k <= 5; ++k) {
     const auto frame = std::filesystem::path("frames") / ("dem_00000" + std::to_string(k) + ".vtp");
@@ -156,12 +147,12 @@ TEST(ResumeInProcess, EllipsoidsResumeBitForBit) {
 TEST(ResumeInProcess, ACheckpointOfOtherParticlesDoesNotFit) {
   const TempDir dir;
   const io::Case the_case = test_support::load_case_text(dir, tank("0.001"));
-  ASSERT_EQ(run(the_case, dir / "out").summary.status, "completed");
+  ASSERT_EQ(test_support::run_case_into(the_case, dir / "out").summary.status, "completed");
   const StateArchive checkpoint = io::CheckpointFolder(dir / "out" / "checkpoints").read_latest();
   std::string text = tank("0.001");
   text.replace(text.find("count: 30"), 9, "count: 31");
   const io::Case other = test_support::load_case_text(dir, text);
-  EXPECT_THROW(run(other, dir / "other", &checkpoint), StateError);
+  EXPECT_THROW(test_support::run_case_into(other, dir / "other", &checkpoint), StateError);
   EXPECT_FALSE(std::filesystem::exists(dir / "other" / "series.csv"))
       << "a checkpoint that does not fit must not write";
 }
@@ -171,7 +162,7 @@ TEST(ResumeInProcess, ACheckpointOfOtherParticlesDoesNotFit) {
 TEST(ResumeInProcess, ACheckpointWithIndicesTheCaseCannotHaveDoesNotFit) {
   const TempDir dir;
   const io::Case the_case = test_support::load_case_text(dir, tank("0.001"));
-  ASSERT_EQ(run(the_case, dir / "out").summary.status, "completed");
+  ASSERT_EQ(test_support::run_case_into(the_case, dir / "out").summary.status, "completed");
   const StateArchive good = io::CheckpointFolder(dir / "out" / "checkpoints").read_latest();
   const auto damaged = [&good](const std::string& path, std::int64_t value) {
     StateArchive archive = good;
@@ -182,9 +173,9 @@ TEST(ResumeInProcess, ACheckpointWithIndicesTheCaseCannotHaveDoesNotFit) {
     return archive;
   };
   const StateArchive species = damaged("methods/dem/fields/species", 7);
-  EXPECT_THROW(run(the_case, dir / "a", &species), StateError);
+  EXPECT_THROW(test_support::run_case_into(the_case, dir / "a", &species), StateError);
   const StateArchive kind = damaged("methods/sph/fields/kind", 5);
-  EXPECT_THROW(run(the_case, dir / "b", &kind), StateError);
+  EXPECT_THROW(test_support::run_case_into(the_case, dir / "b", &kind), StateError);
 }
 
 }  // namespace

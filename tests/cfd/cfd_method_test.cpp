@@ -11,7 +11,6 @@
 
 #include "app/simulation.hpp"
 #include "core/error.hpp"
-#include "io/checkpoint_folder.hpp"
 #include "support/case_run.hpp"
 
 namespace partimix::cfd {
@@ -33,12 +32,6 @@ cfd:
   max_dt: 0.05
   sides: {y+: {velocity: [1, 0]}}
 )" + extra;
-}
-
-test_support::CaseRun run(const io::Case& the_case, const std::filesystem::path& out,
-                          const StateArchive* checkpoint = nullptr) {
-  app::Simulation simulation = app::build_simulation(the_case, {checkpoint != nullptr});
-  return test_support::run_simulation(the_case, simulation, out, checkpoint);
 }
 
 TEST(CfdMethod, CavityRunsAndWritesGridFrames) {
@@ -90,13 +83,7 @@ TEST(CfdMethod, WallsBlockCellsAndTheParticlesCarryTheFluidMass) {
 
 TEST(CfdMethod, TheSecondHalfFromACheckpointIsTheRunThatWentThrough) {
   const TempDir dir;
-  const io::Case whole = test_support::load_case_text(dir, cavity("2.0"));
-  const test_support::CaseRun through = run(whole, dir / "whole");
-  ASSERT_EQ(through.summary.status, "completed");
-  const io::Case half = test_support::load_case_text(dir, cavity("1.2"));
-  ASSERT_EQ(run(half, dir / "parts").summary.status, "completed");
-  const StateArchive checkpoint = io::CheckpointFolder(dir / "parts" / "checkpoints").read_latest();
-  ASSERT_EQ(run(whole, dir / "parts", &checkpoint).summary.status, "completed");
+  ASSERT_NO_FATAL_FAILURE(test_support::run_through_and_resumed(dir, cavity("2.0"), cavity("1.2")));
   EXPECT_EQ(read_file(dir / "whole" / "series.csv"), read_file(dir / "parts" / "series.csv"));
   EXPECT_EQ(read_file(dir / "whole" / "cfd.pvd"), read_file(dir / "parts" / "cfd.pvd"));
   for (int k = 0; k <= 4; ++k) {

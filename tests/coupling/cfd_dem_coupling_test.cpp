@@ -14,7 +14,6 @@
 #include "core/error.hpp"
 #include "coupling/cfd_dem_coupling.hpp"
 #include "dem/dem_solver.hpp"
-#include "io/checkpoint_folder.hpp"
 #include "support/case_run.hpp"
 
 namespace partimix::coupling {
@@ -149,20 +148,9 @@ couplings:
 )";
 }
 
-test_support::CaseRun run(const io::Case& the_case, const std::filesystem::path& out,
-                          const StateArchive* checkpoint = nullptr) {
-  app::Simulation simulation = app::build_simulation(the_case, {checkpoint != nullptr});
-  return test_support::run_simulation(the_case, simulation, out, checkpoint);
-}
-
 TEST(CfdDemCoupling, TheSecondHalfFromACheckpointIsTheRunThatWentThrough) {
   const TempDir dir;
-  const io::Case whole = test_support::load_case_text(dir, tank("0.03"));
-  ASSERT_EQ(run(whole, dir / "whole").summary.status, "completed");
-  const io::Case half = test_support::load_case_text(dir, tank("0.015"));
-  ASSERT_EQ(run(half, dir / "parts").summary.status, "completed");
-  const StateArchive checkpoint = io::CheckpointFolder(dir / "parts" / "checkpoints").read_latest();
-  ASSERT_EQ(run(whole, dir / "parts", &checkpoint).summary.status, "completed");
+  ASSERT_NO_FATAL_FAILURE(test_support::run_through_and_resumed(dir, tank("0.03"), tank("0.015")));
   EXPECT_EQ(test_support::read_file(dir / "whole" / "series.csv"),
             test_support::read_file(dir / "parts" / "series.csv"));
   for (const std::string frame : {"cfd_000003.vti", "dem_000003.vtp"})

@@ -2,6 +2,8 @@
 // Building and running a case in this process, for tests that need the run's summary and its
 // figures (the analyses' time averages and final values): from a case file's text, into a
 // folder of the test's or a temporary one, fresh or from a checkpoint.
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -11,6 +13,7 @@
 #include "app/simulation.hpp"
 #include "core/state_archive.hpp"
 #include "io/case.hpp"
+#include "io/checkpoint_folder.hpp"
 #include "io/run_metadata.hpp"
 #include "support/temp_dir.hpp"
 
@@ -40,6 +43,25 @@ inline CaseRun run_simulation(const io::Case& the_case, app::Simulation& simulat
   run.summary = runner.run(checkpoint);
   run.figures = runner.figures();
   return run;
+}
+
+// Builds `the_case` (for a restore when `checkpoint` is given) and runs it into `out`.
+inline CaseRun run_case_into(const io::Case& the_case, const std::filesystem::path& out,
+                             const StateArchive* checkpoint = nullptr) {
+  app::Simulation simulation = app::build_simulation(the_case, {checkpoint != nullptr});
+  return run_simulation(the_case, simulation, out, checkpoint);
+}
+
+// The case `whole` (a case file's text) run through into dir/whole; and into dir/parts, the case
+// `half` (the same, ending sooner) and then `whole` again from half's newest checkpoint. The
+// caller compares the two folders.
+inline void run_through_and_resumed(const TempDir& dir, const std::string& whole,
+                                    const std::string& half) {
+  const io::Case through = load_case_text(dir, whole);
+  ASSERT_EQ(run_case_into(through, dir / "whole").summary.status, "completed");
+  ASSERT_EQ(run_case_into(load_case_text(dir, half), dir / "parts").summary.status, "completed");
+  const StateArchive checkpoint = io::CheckpointFolder(dir / "parts" / "checkpoints").read_latest();
+  ASSERT_EQ(run_case_into(through, dir / "parts", &checkpoint).summary.status, "completed");
 }
 
 inline CaseRun run_case(const io::Case& the_case) {
