@@ -4,9 +4,9 @@
 
 namespace partimix::cfd {
 
-FlowMask blocked_by_walls(const grid::StaggeredGrid& grid,
-                          std::span<const std::shared_ptr<const geometry::Surface>> walls) {
-  FlowMask mask = open_mask(grid);
+BlockedCells blocked_by_walls(const grid::StaggeredGrid& grid,
+                              std::span<const std::shared_ptr<const geometry::Surface>> walls) {
+  BlockedCells blocked{open_mask(grid), std::vector<std::int32_t>(grid.cell_count(), -1)};
   double h = 0.0;
   for (int axis = 0; axis < grid.dimensions(); ++axis)
     h = std::max(h, grid.spacing(axis));
@@ -14,17 +14,18 @@ FlowMask blocked_by_walls(const grid::StaggeredGrid& grid,
   const double reach = h;
   grid.for_each_cell([&](const std::array<int, 3>& c, std::size_t index) {
     const Vec3 centre = grid.cell_centre(c[0], c[1], c[2]);
-    for (const auto& wall : walls) {
+    for (std::size_t w = 0; w < walls.size(); ++w) {
       geometry::SurfacePoint point;
       // A centre on the surface is blocked: round-off in its coordinate must not decide.
-      if (wall->nearest(centre, reach, point) && point.gap <= 1e-9 * h) {
-        mask.open_cell[index] = 0;
+      if (walls[w]->nearest(centre, reach, point) && point.gap <= 1e-9 * h) {
+        blocked.mask.open_cell[index] = 0;
+        blocked.wall[index] = static_cast<std::int32_t>(w);
         break;
       }
     }
   });
-  open_faces(grid, mask);
-  return mask;
+  open_faces(grid, blocked.mask);
+  return blocked;
 }
 
 }  // namespace partimix::cfd

@@ -2,8 +2,10 @@
 // The cells of a grid fluid that walls block (docs/cfd.md, "Walls: blocked cells"): a cell is
 // blocked when its centre lies on or behind the surface of a wall (the staircase
 // representation); the faces' flags follow from the cells' (cfd/flow_mask.hpp).
+#include <cstdint>
 #include <memory>
 #include <span>
+#include <vector>
 
 #include "cfd/flow_mask.hpp"
 #include "geometry/surface.hpp"
@@ -11,7 +13,12 @@
 
 namespace partimix::cfd {
 
-FlowMask blocked_by_walls(const grid::StaggeredGrid& grid,
-                          std::span<const std::shared_ptr<const geometry::Surface>> walls);
+struct BlockedCells {
+  FlowMask mask;
+  std::vector<std::int32_t> wall;  // per cell: the index of the wall that blocks it, -1 open
+};
+
+BlockedCells blocked_by_walls(const grid::StaggeredGrid& grid,
+                              std::span<const std::shared_ptr<const geometry::Surface>> walls);
 
 }  // namespace partimix::cfd

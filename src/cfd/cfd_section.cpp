@@ -1,5 +1,8 @@
 #include "cfd/cfd_section.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "io/axis_names.hpp"
@@ -75,16 +78,44 @@ void read_sides(Reader& section, const Domain& domain, BoxSides& sides) {
   map.done();
 }
 
-void read_walls(const io::Case& the_case, CfdConfig& config) {
-  for (std::size_t w = 0; w < the_case.walls.size(); ++w) {
-    const io::WallSpec& wall = the_case.walls[w];
-    if (wall.motion.type != "fixed") {
-      throw io::case_error(the_case, fmt::format("walls[{}].motion", w),
-                           "the cfd method blocks cells of fixed walls only so far (docs/cfd.md, "
-                           "\"Status\")");
-    }
-    config.walls.push_back(wall.surface);
+// The times at which a moving wall is checked to stay in place: after every start-up ramp,
+// over a turn of the fastest rotation (1 s without one).
+InPlaceSamples in_place_samples(const io::Case& the_case) {
+  InPlaceSamples samples;
+  double fastest = 0.0;
+  for (const io::WallSpec& wall : the_case.walls) {
+    samples.start = std::max(samples.start, wall.motion.ramp_time);
+    fastest = std::max({fastest, std::abs(wall.motion.rpm), std::abs(wall.motion.revolution_rpm)});
   }
+  if (fastest > 0.0)
+    samples.period = 60.0 / fastest;
+  return samples;
+}
+
+void read_walls(const io::Case& the_case, CfdConfig& config) {
+  for (const io::WallSpec& wall : the_case.walls) {
+    config.walls.push_back(wall.surface);
+    config.wall_motions.push_back(
+        geometry::motion_registry().create(wall.motion.type, wall.motion));
+  }
+  config.in_place_samples = in_place_samples(the_case);
+}
+
+// `rotating_frame: {wall: k}`: the grid turns with wall k, in rotation about a fixed axis.
+void read_frame(Reader& section, const io::Case& the_case, CfdConfig& config) {
+  if (!section.contains("rotating_frame"))
+    return;
+  Reader frame = section.map("rotating_frame");
+  const int wall = frame.required<int>("wall", at_least(0));
+  if (wall >= static_cast<int>(the_case.walls.size()))
+    throw frame.error("wall",
+                      fmt::format("the case has {} walls (indices from 0)", the_case.walls.size()));
+  if (the_case.walls[static_cast<std::size_t>(wall)].motion.type != "rotation")
+    throw frame.error("wall", fmt::format("walls[{}] must be in rotation (motion: {{type: "
+                                          "rotation}}): the frame turns with it about its axis",
+                                          wall));
+  config.frame_wall = wall;
+  frame.done();
 }
 
 }  // namespace
@@ -100,6 +131,7 @@ std::shared_ptr<CfdSection> read_cfd_section(Reader& root, const io::Case& the_c
   config.settings.gravity = the_case.gravity;
   config.max_cells = the_case.limits.grid_nodes;
   read_walls(the_case, config);
+  read_frame(section, the_case, config);
   section.done();
   return spec;
 }

@@ -13,6 +13,12 @@ namespace {
 
 const InputLocation kCellSize{"", 0, 0, "cfd.cell_size"};
 
+FluidFrame frame_of(const CfdConfig& config) {
+  if (config.frame_wall < 0)
+    return {};
+  return FluidFrame(config.wall_motions[static_cast<std::size_t>(config.frame_wall)]);
+}
+
 }  // namespace
 
 // The domain's box with the whole count of cells nearest to its length over cfd.cell_size along
@@ -42,10 +48,23 @@ grid::StaggeredGrid CfdSolver::make_grid(const Domain& domain, const CfdConfig& 
 }
 
 CfdSolver::CfdSolver(ParticleStore& store, const Domain& domain, const CfdConfig& config)
-    : store_(store), domain_(domain), config_(config) {
+    : store_(store),
+      domain_(domain),
+      config_(config),
+      frame_motion_(frame_of(config)),
+      wall_motions_(config.wall_motions, frame_motion_) {
   const grid::StaggeredGrid grid = make_grid(domain, config);
-  const FlowMask mask = blocked_by_walls(grid, config.walls);
-  fluid_ = std::make_unique<FluidSolver>(grid, mask, config.sides, config.settings);
+  const int moved = wall_motions_.first_not_in_place(grid, config.walls, config.in_place_samples);
+  if (moved >= 0)
+    throw InputError(
+        InputLocation{"", 0, 0, fmt::format("walls[{}].motion", moved)},
+        "the grid fluid blocks a wall's cells once, so the wall's surface must stay in place in "
+        "the fluid's frame: a fixed or sliding wall, a surface of revolution turning about its "
+        "own axis, or the body that cfd.rotating_frame turns with (docs/cfd.md, \"Moving walls "
+        "and the rotating frame\")");
+  BlockedCells blocked = blocked_by_walls(grid, config.walls);
+  wall_of_cell_ = std::move(blocked.wall);
+  fluid_ = std::make_unique<FluidSolver>(grid, blocked.mask, config.sides, config.settings);
   lay_out_cells();
   update_cells();
 }
@@ -68,7 +87,9 @@ void CfdSolver::lay_out_cells() {
       x[2] = 0.0;
     store_.position()[p] = x;
   }
-  frame_ = GridFrame{grid.dimensions(), grid.origin(), Vec3::Zero(), {}, {}};
+  frame_ = GridFrame{};
+  frame_.dimensions = grid.dimensions();
+  frame_.origin = grid.origin();
   for (int axis = 0; axis < 3; ++axis) {
     frame_.cells[axis] = grid.cells(axis);
     frame_.spacing[axis] = grid.spacing(axis);
@@ -78,19 +99,30 @@ void CfdSolver::lay_out_cells() {
     frame_open_[c] = 1.0;
 }
 
-// The particles' velocity and mass from the fluid: ρ ε V.
+// The particles' place, velocity (in the lab) and mass from the fluid: ρ ε V.
 void CfdSolver::update_cells() {
   const grid::StaggeredGrid& grid = fluid_->grid();
   const double mass = config_.settings.density * grid.cell_volume();
   const std::vector<double>& eps = fluid_->void_fraction();
+  const geometry::RigidPose pose = frame_motion_.pose(time_);
   for (std::size_t p = 0; p < open_cells_.size(); ++p) {
     const auto [i, j, k] = grid.cell_coordinates(open_cells_[p]);
-    store_.velocity()[p] = fluid_->cell_velocity(i, j, k);
+    const Vec3 u = fluid_->cell_velocity(i, j, k);
     store_.mass()[p] = mass * eps[open_cells_[p]];
+    if (!frame_motion_.rotating()) {
+      store_.velocity()[p] = u;
+      continue;
+    }
+    Vec3 x = grid.cell_centre(i, j, k);
+    if (grid.dimensions() == 2)
+      x[2] = 0.0;
+    store_.position()[p] = pose.place(x);
+    store_.velocity()[p] = lab_velocity(pose, x, u);
   }
 }
 
 void CfdSolver::step(double dt) {
+  set_frame(dt);
   const LinearSolve pressure = fluid_->step(dt);
   const LinearSolve& momentum = fluid_->momentum_solve();
   for (const auto& [solve, what] : {std::pair{pressure, "the pressure correction"},
@@ -105,6 +137,19 @@ void CfdSolver::step(double dt) {
   time_ += dt;
   ++steps_;
   update_cells();
+}
+
+// The frame's forces at the middle of the step, the walls' velocities at its end (the implicit
+// viscous term's).
+void CfdSolver::set_frame(double dt) {
+  if (frame_motion_.rotating())
+    fluid_->set_frame_forces(frame_motion_.forces(time_ + 0.5 * dt, config_.settings.gravity));
+  if (!wall_motions_.any_moving())
+    return;
+  const double end = time_ + dt;
+  fluid_->set_wall_velocities([&](const Vec3& x, std::size_t cell) {
+    return wall_motions_.velocity(static_cast<std::size_t>(wall_of_cell_[cell]), x, end);
+  });
 }
 
 std::map<std::string, double> CfdSolver::derived_parameters() const {
@@ -122,20 +167,37 @@ std::map<std::string, double> CfdSolver::derived_parameters() const {
 }
 
 // Velocity (3 components) at the cell centres, pressure, void fraction and the open flag, per
-// cell.
+// cell; in a rotating frame the image turns with the grid (its direction matrix), the velocity
+// is the lab's and relative_velocity the velocity relative to the frame, both in lab directions.
 const GridFrame* CfdSolver::grid_frame() {
   const grid::StaggeredGrid& grid = fluid_->grid();
+  const geometry::RigidPose pose = frame_motion_.pose(time_);
   frame_velocity_.assign(3 * grid.cell_count(), 0.0);
+  frame_relative_velocity_.assign(frame_motion_.rotating() ? 3 * grid.cell_count() : 0, 0.0);
   for (const std::size_t c : open_cells_) {
     const auto [i, j, k] = grid.cell_coordinates(c);
     const Vec3 u = fluid_->cell_velocity(i, j, k);
+    Vec3 lab = u;
+    if (frame_motion_.rotating()) {
+      Vec3 x = grid.cell_centre(i, j, k);
+      if (grid.dimensions() == 2)
+        x[2] = 0.0;
+      lab = lab_velocity(pose, x, u);
+      const Vec3 relative = pose.rotation * u;
+      for (int a = 0; a < 3; ++a)
+        frame_relative_velocity_[3 * c + static_cast<std::size_t>(a)] = relative[a];
+    }
     for (int a = 0; a < 3; ++a)
-      frame_velocity_[3 * c + static_cast<std::size_t>(a)] = u[a];
+      frame_velocity_[3 * c + static_cast<std::size_t>(a)] = lab[a];
   }
+  frame_.origin = pose.place(grid.origin());
+  frame_.direction = pose.rotation;
   frame_.cell_arrays = {{"velocity", 3, frame_velocity_},
                         {"pressure", 1, fluid_->pressure()},
                         {"void_fraction", 1, fluid_->void_fraction()},
                         {"open", 1, frame_open_}};
+  if (frame_motion_.rotating())
+    frame_.cell_arrays.push_back({"relative_velocity", 3, frame_relative_velocity_});
   return &frame_;
 }
 
@@ -144,6 +206,9 @@ void CfdSolver::save(StateArchive& archive, const std::string& prefix) const {
   const FaceArrays& velocity = fluid_->velocity();
   for (int axis = 0; axis < 3; ++axis)
     archive.put_doubles(fmt::format("{}velocity_{}", prefix, axis), velocity[axis]);
+  for (int axis = 0; axis < 3; ++axis)
+    archive.put_doubles(fmt::format("{}previous_velocity_{}", prefix, axis),
+                        fluid_->previous_velocity()[axis]);
   archive.put_doubles(prefix + "pressure", fluid_->pressure());
   archive.put_doubles(prefix + "correction", fluid_->last_correction());
   archive.put_doubles(prefix + "void_fraction", fluid_->void_fraction());
@@ -173,6 +238,11 @@ void CfdSolver::restore(const StateArchive& archive, const std::string& prefix) 
   const std::vector<double> correction = sized(archive, prefix + "correction", grid.cell_count());
   const std::vector<double> eps = sized(archive, prefix + "void_fraction", grid.cell_count());
   fluid_->restore(velocity, pressure, correction, eps);
+  FaceArrays previous;
+  for (int axis = 0; axis < 3; ++axis)
+    previous[static_cast<std::size_t>(axis)] =
+        sized(archive, fmt::format("{}previous_velocity_{}", prefix, axis), grid.face_count(axis));
+  fluid_->restore_previous_velocity(previous);
   time_ = archive.scalar(prefix + "time");
   const auto steps = archive.integers(prefix + "steps");
   if (steps.size() != 1)

@@ -3,12 +3,16 @@
 // its cells blocked by the walls, and the fluid's time step (cfd/fluid_solver.hpp). Its
 // particles are the open cells, each a fluid point at the cell's centre carrying the cell's
 // fluid mass ρ ε V and velocity, so that the analyses of any method's material (kinetic energy,
-// largest speed, profiles) measure the fluid; its frames are the grid's cells (.vti).
+// largest speed, profiles) measure the fluid; its frames are the grid's cells (.vti). In a
+// rotating frame (cfd.rotating_frame) the grid turns with a wall: the particles' positions and
+// velocities and the frames are given in the lab.
 #include <memory>
 #include <vector>
 
 #include "cfd/config.hpp"
+#include "cfd/fluid_frame.hpp"
 #include "cfd/fluid_solver.hpp"
+#include "cfd/wall_motions.hpp"
 #include "particles/grid_frame.hpp"
 #include "particles/solver.hpp"
 
@@ -16,7 +20,8 @@ namespace partimix::cfd {
 
 class CfdSolver final : public Solver {
  public:
-  // Throws InputError at `cfd.cell_size` for a grid beyond config.max_cells or with no open cell.
+  // Throws InputError at `cfd.cell_size` for a grid beyond config.max_cells or with no open cell,
+  // at `walls[w].motion` for a wall whose surface does not stay in place in the fluid's frame.
   CfdSolver(ParticleStore& store, const Domain& domain, const CfdConfig& config);
 
   std::string_view name() const override { return "cfd"; }
@@ -37,16 +42,21 @@ class CfdSolver final : public Solver {
   static grid::StaggeredGrid make_grid(const Domain& domain, const CfdConfig& config);
   void lay_out_cells();
   void update_cells();
+  void set_frame(double dt);
 
   ParticleStore& store_;
   Domain domain_;
   CfdConfig config_;
   std::unique_ptr<FluidSolver> fluid_;
-  std::vector<std::size_t> open_cells_;  // the cell of each particle
+  FluidFrame frame_motion_;
+  WallMotions wall_motions_;
+  std::vector<std::int32_t> wall_of_cell_;  // per cell: the wall blocking it, -1 open
+  std::vector<std::size_t> open_cells_;     // the cell of each particle
   double time_ = 0.0;
   std::int64_t steps_ = 0;
   GridFrame frame_;
   std::vector<double> frame_velocity_;
+  std::vector<double> frame_relative_velocity_;
   std::vector<double> frame_open_;
 };
 

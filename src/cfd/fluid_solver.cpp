@@ -5,6 +5,7 @@
 
 #include "cfd/cell_shear_rate.hpp"
 #include "cfd/face_stencil.hpp"
+#include "cfd/frame_forces.hpp"
 #include "cfd/transpose_viscous.hpp"
 
 namespace partimix::cfd {
@@ -16,6 +17,7 @@ FluidSolver::FluidSolver(const grid::StaggeredGrid& grid, const FlowMask& mask,
       sides_(sides),
       settings_(settings),
       velocity_(face_arrays(grid, 0.0)),
+      extrapolated_(face_arrays(grid, 0.0)),
       pressure_(grid.cell_count(), 0.0),
       cell_void_fraction_(grid.cell_count(), 1.0),
       old_cell_void_fraction_(grid.cell_count(), 1.0),
@@ -37,6 +39,9 @@ FluidSolver::FluidSolver(const grid::StaggeredGrid& grid, const FlowMask& mask,
     rheology_.emplace(settings.rheology);
   mark_outlets(grid_, sides_, mask_);
   set_side_faces();
+  list_wall_faces();
+  previous_velocity_ = velocity_;
+  frame_forces_.gravity = settings.gravity;
   predictor_.lay_out(grid_, mask_);
   projection_.lay_out(grid_, mask_);
 }
@@ -51,6 +56,38 @@ void FluidSolver::set_side_faces() {
         velocity_[axis][index] = box_side(sides_, axis, f[axis] == 0 ? -1 : 1).velocity[axis];
     });
   }
+}
+
+void FluidSolver::list_wall_faces() {
+  for (int axis = 0; axis < grid_.dimensions(); ++axis)
+    grid_.for_each_face(axis, [&](const Coordinates& f, std::size_t index) {
+      if (mask_.open_face[axis][index] || mask_.outlet_face[axis][index])
+        return;
+      for (const int side : {-1, 1}) {
+        Coordinates cell;
+        if (!cell_beside(grid_, axis, f, side, cell) || cell[axis] >= grid_.cells(axis))
+          return;
+      }
+      for (const int side : {-1, 1}) {
+        Coordinates cell;
+        cell_beside(grid_, axis, f, side, cell);
+        const std::size_t c = cell_index(grid_, cell);
+        if (!mask_.open_cell[c]) {
+          wall_faces_[axis].emplace_back(index, c);
+          return;
+        }
+      }
+    });
+}
+
+void FluidSolver::set_wall_velocities(
+    const std::function<Vec3(const Vec3&, std::size_t)>& velocity_at) {
+  predictor_.set_wall_velocities(grid_, velocity_at);
+  for (int axis = 0; axis < grid_.dimensions(); ++axis)
+    for (const auto& [face, cell] : wall_faces_[axis]) {
+      const auto f = grid_.face_coordinates(axis, face);
+      velocity_[axis][face] = velocity_at(grid_.face_centre(axis, f[0], f[1], f[2]), cell)[axis];
+    }
 }
 
 double FluidSolver::stable_dt() const {
@@ -114,7 +151,7 @@ void FluidSolver::explicit_terms(double dt) {
       diagonal_[a][index] = rho * eps / dt + drag_coefficient_[a][index];
       rhs_[a][index] = rho * old_void_fraction_[a][index] * velocity_[a][index] / dt -
                        convection_[a][index] + transpose_[a][index] - eps * gradient +
-                       eps * rho * settings_.gravity[a] + grain_source_[a][index];
+                       eps * rho * frame_forces_.gravity[a] + grain_source_[a][index];
       coefficient_[a][index] = eps / diagonal_[a][index];
     });
   for (int a = 0; a < grid_.dimensions(); ++a)
@@ -140,6 +177,15 @@ LinearSolve FluidSolver::step(double dt) {
                   velocity_, convection_);
   transpose_viscous_term(grid_, mask_, cell_void_fraction_, cell_viscosity_, velocity_, transpose_);
   explicit_terms(dt);
+  if (frame_forces_.rotating) {
+    for (int a = 0; a < grid_.dimensions(); ++a)
+      for (std::size_t f = 0; f < velocity_[a].size(); ++f)
+        extrapolated_[a][f] = 1.5 * velocity_[a][f] - 0.5 * previous_velocity_[a][f];
+    add_frame_forces(grid_, mask_, frame_forces_, settings_.density, void_fraction_, extrapolated_,
+                     rhs_);
+  }
+  for (int a = 0; a < grid_.dimensions(); ++a)
+    std::copy(velocity_[a].begin(), velocity_[a].end(), previous_velocity_[a].begin());
   momentum_solve_ = predictor_.solve(grid_, sides_, cell_void_fraction_, cell_viscosity_, diagonal_,
                                      rhs_, velocity_);
   extrapolate_to_outlets();
@@ -167,6 +213,7 @@ void FluidSolver::restore(const FaceArrays& velocity, const std::vector<double>&
                           const std::vector<double>& void_fraction) {
   start_void_fraction(void_fraction);
   velocity_ = velocity;
+  previous_velocity_ = velocity;
   pressure_ = pressure;
   correction_ = correction;
   projection_.set_guess(correction_);

@@ -6,14 +6,20 @@
 // continuity source (ε^{n+1} - ε^n) / Δt. The viscosity is the shared rheology's (materials/
 // rheology.hpp): constant for a Newtonian fluid, else η(γ̇) per cell from the shear rate of the
 // last step's velocity (cfd/cell_shear_rate.hpp; docs/cfd.md, "Non-Newtonian viscosity"). The
-// viscous term's transpose part ∇·(ε η ∇uᵀ) is explicit (cfd/transpose_viscous.hpp).
+// viscous term's transpose part ∇·(ε η ∇uᵀ) is explicit (cfd/transpose_viscous.hpp). In a
+// rotating frame the gravity turns and the fictitious forces join the explicit terms
+// (cfd/frame_forces.hpp); walls moving along their surfaces give the ghost values their velocity.
+#include <array>
+#include <functional>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "cfd/box_sides.hpp"
 #include "cfd/convection.hpp"
 #include "cfd/flow_mask.hpp"
+#include "cfd/fluid_frame.hpp"
 #include "cfd/momentum_predictor.hpp"
 #include "cfd/pressure_projection.hpp"
 #include "core/linear_solve.hpp"
@@ -78,11 +84,25 @@ class FluidSolver {
   // η per cell [Pa s], as the last step used it (the rheology's at the shear rate then).
   const std::vector<double>& viscosity() const { return cell_viscosity_; }
 
+  // The frame's gravity and fictitious forces for the next step (by default the settings'
+  // gravity, no rotation).
+  void set_frame_forces(const FrameForces& forces) { frame_forces_ = forces; }
+  // The velocity of the walls of blocked cells for the next step, velocity_at(x, blocked cell):
+  // the ghost values behind them (cfd/momentum_predictor.hpp), and the faces of blocked cells,
+  // which take the wall's velocity at their centre (docs/cfd.md, "Moving walls and the rotating
+  // frame").
+  void set_wall_velocities(const std::function<Vec3(const Vec3&, std::size_t)>& velocity_at);
+  // The velocity before the last step, u^{n-1}, which the Coriolis term's estimate takes; the
+  // same as velocity() before the first step.
+  const FaceArrays& previous_velocity() const { return previous_velocity_; }
+  void restore_previous_velocity(const FaceArrays& velocity) { previous_velocity_ = velocity; }
+
   // The mean of the faces on the cell's two sides along each axis.
   Vec3 cell_velocity(int i, int j, int k) const;
 
  private:
   void set_side_faces();
+  void list_wall_faces();
   void faces_from_cells(const std::vector<double>& cells, FaceArrays& faces) const;
   void explicit_terms(double dt);
   void extrapolate_to_outlets();
@@ -93,6 +113,11 @@ class FluidSolver {
   BoxSides sides_;
   FluidSettings settings_;
   FaceArrays velocity_;
+  // Per axis: the faces of blocked cells inside the box, each with a blocked cell beside it.
+  std::array<std::vector<std::pair<std::size_t, std::size_t>>, 3> wall_faces_;
+  FaceArrays previous_velocity_;  // u^{n-1}
+  FaceArrays extrapolated_;       // (3 u^n - u^{n-1}) / 2
+  FrameForces frame_forces_;
   std::vector<double> pressure_;
   std::vector<double> cell_void_fraction_;      // ε^{n+1}
   std::vector<double> old_cell_void_fraction_;  // ε^n

@@ -95,6 +95,7 @@ MomentumPredictor::Term MomentumPredictor::link_to(const grid::StaggeredGrid& gr
     }
     if (term.cells[2] < 0 && term.cells[3] < 0) {
       term.link = Link::blocked_wall;
+      term.wall_cell = static_cast<std::int64_t>(cell_index(grid, below_next));
       return term;
     }
   }
@@ -146,7 +147,24 @@ void MomentumPredictor::fill(const grid::StaggeredGrid& grid, const BoxSides& si
       }
       case Link::blocked_wall:
         values[term.diagonal] += 2.0 * coefficient;
+        b += 2.0 * coefficient * term.wall_velocity;
         break;
+    }
+  }
+}
+
+void MomentumPredictor::set_wall_velocities(
+    const grid::StaggeredGrid& grid,
+    const std::function<Vec3(const Vec3&, std::size_t)>& velocity_at) {
+  for (int axis = 0; axis < grid.dimensions(); ++axis) {
+    Component& component = components_[static_cast<std::size_t>(axis)];
+    for (Term& term : component.terms) {
+      if (term.link != Link::blocked_wall)
+        continue;
+      const auto f = grid.face_coordinates(axis, component.row_face[term.row]);
+      Vec3 x = grid.face_centre(axis, f[0], f[1], f[2]);
+      x[term.along] += 0.5 * term.side * grid.spacing(term.along);
+      term.wall_velocity = velocity_at(x, static_cast<std::size_t>(term.wall_cell))[axis];
     }
   }
 }

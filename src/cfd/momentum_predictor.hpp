@@ -11,10 +11,12 @@
 // blocked cell) enters as a known value; where the neighbour lies beyond a no-slip wall
 // (outside the box, or between two blocked cells) the ghost value 2 u_wall - u*_f puts u_wall
 // on the wall half a cell away; a slip or outlet side adds nothing. Blocked cells' walls are at
-// rest. Each component's system is symmetric positive definite, solved by conjugate gradients; its
-// pattern is laid out once per mask, its values refilled each step without allocating.
+// rest unless set_wall_velocities gives them a velocity (a moving wall's, along its surface). Each
+// component's system is symmetric positive definite, solved by conjugate gradients; its pattern is
+// laid out once per mask, its values refilled each step without allocating.
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -26,6 +28,7 @@
 #include "core/conjugate_gradient.hpp"
 #include "core/linear_solve.hpp"
 #include "core/sparse_pattern.hpp"
+#include "core/vec.hpp"
 #include "grid/staggered_grid.hpp"
 
 namespace partimix::cfd {
@@ -41,6 +44,10 @@ class MomentumPredictor {
   LinearSolve solve(const grid::StaggeredGrid& grid, const BoxSides& sides,
                     const std::vector<double>& void_fraction, const std::vector<double>& viscosity,
                     const FaceArrays& diagonal, const FaceArrays& rhs, FaceArrays& velocity);
+  // The velocity of the walls behind blocked cells, for the ghost values: velocity_at(x, cell) at
+  // the staircase point x half a cell from the face, `cell` the blocked cell behind it.
+  void set_wall_velocities(const grid::StaggeredGrid& grid,
+                           const std::function<Vec3(const Vec3&, std::size_t)>& velocity_at);
 
  private:
   // How one neighbour of a face enters its row.
@@ -54,6 +61,8 @@ class MomentumPredictor {
     int off_diagonal;                   // unknown: the neighbour's slot
     std::size_t neighbour;              // unknown, known: the neighbour face
     std::array<std::int64_t, 4> cells;  // the cells whose ε η the coefficient averages, -1 none
+    std::int64_t wall_cell = -1;        // blocked_wall: the blocked cell behind the wall
+    double wall_velocity = 0.0;         // blocked_wall: the wall's velocity along the component
   };
   struct Component {
     Eigen::SparseMatrix<double, Eigen::RowMajor> matrix;

@@ -50,6 +50,12 @@ class StaggeredGrid {
     const std::array<int, 3>& n = face_counts_[axis];
     return (static_cast<std::size_t>(k) * n[1] + j) * n[0] + i;
   }
+  std::array<int, 3> face_coordinates(int axis, std::size_t index) const {
+    const auto nx = static_cast<std::size_t>(face_counts_[axis][0]);
+    const auto ny = static_cast<std::size_t>(face_counts_[axis][1]);
+    return {static_cast<int>(index % nx), static_cast<int>((index / nx) % ny),
+            static_cast<int>(index / (nx * ny))};
+  }
   Vec3 face_centre(int axis, int i, int j, int k) const;
 
   // Calls fn(coordinates, index) for every cell, x fastest.

@@ -20,6 +20,16 @@ std::string whole_extent(const GridFrame& frame) {
   return fmt::format("0 {} 0 {} 0 {}", frame.cells[0], frame.cells[1], nz);
 }
 
+// VTK's Direction: the matrix whose columns are the image's axes in the world, row after row.
+std::string direction_attribute(const Mat3& direction) {
+  std::string text = " Direction=\"";
+  for (int row = 0; row < 3; ++row)
+    for (int column = 0; column < 3; ++column)
+      fmt::format_to(std::back_inserter(text), "{}{:.17g}", row + column == 0 ? "" : " ",
+                     direction(row, column));
+  return text + "\"";
+}
+
 std::string xml_header(const GridFrame& frame, const std::vector<AppendedArray>& field_data,
                        const std::vector<AppendedArray>& cell_data) {
   const std::string extent = whole_extent(frame);
@@ -29,11 +39,13 @@ std::string xml_header(const GridFrame& frame, const std::vector<AppendedArray>&
       "<?xml version=\"1.0\"?>\n"
       "<VTKFile type=\"ImageData\" version=\"1.0\" byte_order=\"LittleEndian\" "
       "header_type=\"UInt64\">\n";
+  const std::string direction =
+      frame.direction.isIdentity(0.0) ? "" : direction_attribute(frame.direction);
   fmt::format_to(std::back_inserter(xml),
                  "  <ImageData WholeExtent=\"{}\" Origin=\"{:.17g} {:.17g} {:.17g}\" "
-                 "Spacing=\"{:.17g} {:.17g} {:.17g}\">\n",
+                 "Spacing=\"{:.17g} {:.17g} {:.17g}\"{}>\n",
                  extent, frame.origin[0], frame.origin[1], z0, frame.spacing[0], frame.spacing[1],
-                 dz);
+                 dz, direction);
   std::uint64_t offset = 0;
   describe_section(xml, "FieldData", "    ", field_data, true, offset);
   fmt::format_to(std::back_inserter(xml), "    <Piece Extent=\"{}\">\n", extent);

@@ -25,8 +25,8 @@ namespace partimix {
 namespace {
 
 using test_support::GhiaPoint;
-using test_support::kGhiaU;
-using test_support::kGhiaV;
+using test_support::kGhiaU100;
+using test_support::kGhiaV100;
 
 // Shepard mean of the fluid particles' velocities about x.
 Vec3 velocity_at(const ParticleStore& store, const Vec3& x, const sph::Kernel& kernel, double h) {
@@ -70,8 +70,8 @@ std::array<double, 30> profiles(const ParticleStore& store) {
   const double h = 1.5 * 0.02;
   std::array<double, 30> values{};
   for (std::size_t k = 0; k < 15; ++k) {
-    values[k] = velocity_at(store, Vec3(0.5, kGhiaU[k].position, 0.0), *kernel, h).x();
-    values[15 + k] = velocity_at(store, Vec3(kGhiaV[k].position, 0.5, 0.0), *kernel, h).y();
+    values[k] = velocity_at(store, Vec3(0.5, kGhiaU100[k].position, 0.0), *kernel, h).x();
+    values[15 + k] = velocity_at(store, Vec3(kGhiaV100[k].position, 0.5, 0.0), *kernel, h).y();
   }
   return values;
 }
@@ -116,9 +116,9 @@ TEST(LidDrivenCavity, CentreLineVelocitiesFollowGhiaAtRe100) {
   std::printf("largest change of a mean centre-line velocity, 10-15 s to 15-20 s: %.4f U\n",
               change);
   const Errors u = compare(
-      kGhiaU, [&](std::size_t k) { return last[k]; }, "u");
+      kGhiaU100, [&](std::size_t k) { return last[k]; }, "u");
   const Errors v = compare(
-      kGhiaV, [&](std::size_t k) { return last[15 + k]; }, "v");
+      kGhiaV100, [&](std::size_t k) { return last[15 + k]; }, "v");
   EXPECT_LT(change, 0.01);
   EXPECT_LT(u.largest, 0.05);
   EXPECT_LT(v.largest, 0.05);

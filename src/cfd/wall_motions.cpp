@@ -1,0 +1,71 @@
+#include "cfd/wall_motions.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <utility>
+
+namespace partimix::cfd {
+namespace {
+
+// Fractions of a turn, irrational to each other, so that no rotational symmetry of a shape
+// (a blade set, a square) maps it onto itself at every one of them.
+constexpr std::array<double, 5> kTurnFractions{0.1234, 0.2718, 0.4142, 0.5772, 0.7071};
+
+}  // namespace
+
+WallMotions::WallMotions(std::vector<std::shared_ptr<const geometry::Motion>> motions,
+                         FluidFrame frame)
+    : motions_(std::move(motions)), frame_(std::move(frame)) {
+  any_moving_ = frame_.rotating() || std::any_of(motions_.begin(), motions_.end(),
+                                                 [](const auto& m) { return m->moves(); });
+}
+
+Vec3 WallMotions::velocity(std::size_t wall, const Vec3& x, double time) const {
+  const geometry::RigidPose frame = frame_.pose(time);
+  const Vec3 lab = frame.place(x);
+  const Vec3 relative = motions_[wall]->pose(time).velocity_at(lab) - frame.velocity_at(lab);
+  return frame.rotation.transpose() * relative;
+}
+
+int WallMotions::first_not_in_place(
+    const grid::StaggeredGrid& grid,
+    std::span<const std::shared_ptr<const geometry::Surface>> surfaces,
+    const InPlaceSamples& samples) const {
+  for (std::size_t w = 0; w < surfaces.size(); ++w)
+    if (!in_place(grid, w, *surfaces[w], samples))
+      return static_cast<int>(w);
+  return -1;
+}
+
+// A frame point x is, at time t, at the wall's body point start + R_wᵀ (place(x) - origin_w).
+bool WallMotions::in_place(const grid::StaggeredGrid& grid, std::size_t wall,
+                           const geometry::Surface& surface, const InPlaceSamples& samples) const {
+  double h = 0.0;
+  for (int axis = 0; axis < grid.dimensions(); ++axis)
+    h = std::max(h, grid.spacing(axis));
+  const double reach = 2.0 * h;
+  bool kept = true;
+  for (const double fraction : kTurnFractions) {
+    const double time = samples.start + fraction * samples.period;
+    const geometry::RigidPose frame = frame_.pose(time);
+    const geometry::RigidPose body = motions_[wall]->pose(time);
+    grid.for_each_cell([&](const std::array<int, 3>& c, std::size_t) {
+      if (!kept)
+        return;
+      const Vec3 x = grid.cell_centre(c[0], c[1], c[2]);
+      geometry::SurfacePoint at_start;
+      if (!surface.nearest(x, reach, at_start) || std::abs(at_start.gap) > reach)
+        return;
+      const Vec3 seen =
+          body.start_origin + body.rotation.transpose() * (frame.place(x) - body.origin);
+      geometry::SurfacePoint now;
+      kept = surface.nearest(seen, reach, now) && std::abs(now.gap - at_start.gap) <= 1e-6 * h;
+    });
+    if (!kept)
+      return false;
+  }
+  return true;
+}
+
+}  // namespace partimix::cfd
