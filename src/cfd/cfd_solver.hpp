@@ -35,6 +35,8 @@ class CfdSolver final : public Solver {
   void restore(const StateArchive& archive, const std::string& prefix) override;
 
   const FluidSolver& fluid() const { return *fluid_; }
+  // The frame the grid is in: the lab, or the body of cfd.rotating_frame's wall.
+  const FluidFrame& frame() const { return frame_motion_; }
   // For a coupling: the void fraction and the grains' drag of the next step.
   FluidSolver& fluid() { return *fluid_; }
 

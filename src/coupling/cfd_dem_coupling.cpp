@@ -54,16 +54,18 @@ CfdDemCoupling::CfdDemCoupling(cfd::CfdSolver& fluid, std::size_t fluid_method,
                      1.5 * largest_spacing(fluid.fluid().grid()));
 }
 
-void CfdDemCoupling::before_method(std::size_t m, double /*time*/, double dt) {
+void CfdDemCoupling::before_method(std::size_t m, double time, double dt) {
   if (m == fluid_method_)
-    exchange_with_fluid(dt);
+    exchange_with_fluid(time, dt);
   else if (m == grain_method_)
     exchange_with_grains(dt);
 }
 
 // At the run's start the fluid starts with the grains' void fraction (no change over its first
 // step).
-void CfdDemCoupling::exchange_with_fluid(double dt) {
+void CfdDemCoupling::exchange_with_fluid(double time, double dt) {
+  frame_ = fluid_.frame().pose(time);
+  frame_spin_ = frame_.rotation.transpose() * frame_.angular_velocity;
   deferred_.assign(grains_.particles().size(), Vec3::Zero());
   if (started_)
     follow_grains(last_dt_);
@@ -100,7 +102,7 @@ void CfdDemCoupling::pressure_gradients() {
 }
 
 // The fluid at grain p with its weights of the last mapping; its pressure gradient from the
-// face gradients found before the grains step.
+// face gradients found before the grains step; both in the lab.
 CfdDemCoupling::Sample CfdDemCoupling::sample(std::size_t p, bool with_pressure) const {
   const cfd::FluidSolver& fluid = fluid_.fluid();
   Sample s;
@@ -121,6 +123,8 @@ CfdDemCoupling::Sample CfdDemCoupling::sample(std::size_t p, bool with_pressure)
       if (with_pressure)
         s.pressure_gradient[a] += w.weight * gradient_[a][w.face];
     }
+  s.velocity = cfd::lab_velocity(frame_, frame_positions_[p], s.velocity);
+  s.pressure_gradient = frame_.rotation * s.pressure_gradient;
   return s;
 }
 
@@ -156,21 +160,24 @@ void CfdDemCoupling::settle_last_step(double dt) {
   }
 }
 
-// The weights and void fraction of the grains where they are now.
+// The weights and void fraction of the grains where they are now, in the fluid's frame.
 void CfdDemCoupling::map_grains() {
   const ParticleStore& store = grains_.particles();
   const cfd::FluidSolver& fluid = fluid_.fluid();
   row_volumes_.resize(store.size());
   row_radii_.resize(store.size());
+  frame_positions_.resize(store.size());
+  const Mat3 back = frame_.rotation.transpose();
   for (std::size_t p = 0; p < store.size(); ++p) {
     const auto id = static_cast<std::size_t>(store.id()[p]);
     row_volumes_[p] = volumes_[id];
     row_radii_[p] = 0.5 * diameters_[id];
+    frame_positions_[p] = frame_.start_origin + back * (store.position()[p] - frame_.origin);
   }
   if (settings_.divided)
-    cell_weights_.build_divided(fluid.grid(), fluid.mask(), store.position(), row_radii_);
+    cell_weights_.build_divided(fluid.grid(), fluid.mask(), frame_positions_, row_radii_);
   else
-    cell_weights_.build(fluid.grid(), fluid.mask(), store.position(), radius_);
+    cell_weights_.build(fluid.grid(), fluid.mask(), frame_positions_, radius_);
   face_weights_.build(fluid.grid(), fluid.mask(), cell_weights_, store.size());
   clipped_ = void_fraction(fluid.grid(), cell_weights_, row_volumes_, settings_.min_void_fraction,
                            void_fraction_);
@@ -196,7 +203,8 @@ void CfdDemCoupling::set_drag() {
 
 // F_i = K_i u_i + the pressure's or buoyancy's force, u_i and ∇p from the fluid's new state,
 // held for the grains' sub-steps, whose length must not exceed the grain's relaxation time
-// m_i / K_i.
+// m_i / K_i. In a rotating frame u_i's part Ω × (x_i - a) is left to the DEM, which takes it at
+// the grain's place in each sub-step (dem/external_forces.hpp).
 void CfdDemCoupling::set_grain_forces(double dt) {
   const ParticleStore& store = grains_.particles();
   const double density = fluid_.fluid().settings().density;
@@ -205,6 +213,7 @@ void CfdDemCoupling::set_grain_forces(double dt) {
   fluid_velocities_.assign(store.size(), Vec3::Zero());
   other_force_.assign(store.size(), Vec3::Zero());
   pressure_force_.assign(store.size(), Vec3::Zero());
+  grains_.set_external_rotation(frame_.angular_velocity, frame_.origin);
   for (std::size_t p = 0; p < store.size(); ++p) {
     const auto id = static_cast<std::size_t>(store.id()[p]);
     const Sample s = sample(p, true);
@@ -222,7 +231,8 @@ void CfdDemCoupling::set_grain_forces(double dt) {
           "{:.3g} s (docs/cfd-dem.md, \"One coupled step and the sub-cycles\"); raise "
           "time.sub_steps.dem or lower cfd.max_dt",
           id, sub_dt, store.mass()[p] / drag_[p]));
-    (*external_.force)[p] = drag_[p] * fluid_velocities_[p] + other_force_[p];
+    const Vec3 turning = frame_.velocity_at(store.position()[p]);
+    (*external_.force)[p] = drag_[p] * (fluid_velocities_[p] - turning) + other_force_[p];
     (*external_.drag)[p] = drag_[p];
     (*external_.impulse)[p] = Vec3::Zero();
   }
@@ -240,23 +250,34 @@ Vec3 CfdDemCoupling::virtual_mass(std::size_t p, std::size_t id, const Vec3& flu
   return mass * ((fluid_velocity - previous_fluid_velocities_[p]) / dt - accelerations_[p]);
 }
 
-// K_f = Σ_i w_if K_i / V_f and S_e,f = Σ_i w_if (K_i v_i - D_i / Δt) / V_f.
+// K_f = Σ_i w_if K_i / V_f and S_e,f = Σ_i w_if (K_i v_i - D_i / Δt) / V_f, in the fluid's
+// frame: v_i relative to it and D_i turned into its directions.
 void CfdDemCoupling::set_fluid_source(double dt) {
   cfd::FluidSolver& fluid = fluid_.fluid();
   const double volume = fluid.grid().cell_volume();
+  const Mat3 back = frame_.rotation.transpose();
+  pushes_.resize(drag_.size());
+  for (std::size_t p = 0; p < drag_.size(); ++p)
+    pushes_[p] = drag_[p] * relative_velocity(p) - back * deferred_[p] / dt;
   for (int a = 0; a < fluid.grid().dimensions(); ++a) {
     std::vector<double>& k = fluid.drag_coefficient()[a];
     std::vector<double>& source = fluid.grain_source()[a];
     std::fill(k.begin(), k.end(), 0.0);
     std::fill(source.begin(), source.end(), 0.0);
     for (std::size_t p = 0; p < drag_.size(); ++p) {
-      const double push = drag_[p] * velocities_[p][a] - deferred_[p][a] / dt;
+      const double push = pushes_[p][a];
       for (const FaceWeights::Weight& w : face_weights_.of(a, p)) {
         k[w.face] += w.weight * drag_[p] / volume;
         source[w.face] += w.weight * push / volume;
       }
     }
   }
+}
+
+// Rᵀ (v_i - Ω × (x_i - a)) with the grain's velocity as the fluid's step uses it.
+Vec3 CfdDemCoupling::relative_velocity(std::size_t p) const {
+  const Vec3 lab_place = frame_.place(frame_positions_[p]);
+  return frame_.rotation.transpose() * (velocities_[p] - frame_.velocity_at(lab_place));
 }
 
 Vec3 CfdDemCoupling::deferred_momentum() const {

@@ -8,7 +8,9 @@
 // forces (dem/external_forces.hpp). The momentum the sub-cycles leave unbalanced over a step,
 // D_i = J_i - (what the fluid's step gave grain i), from the impulse J_i the grains actually
 // received, is taken from the fluid over the next step, so fluid and grains together keep their
-// momentum to round-off with the pressure-gradient force.
+// momentum to round-off with the pressure-gradient force. In a rotating frame (cfd.rotating_frame)
+// the grains are mapped at their places in the frame as it stands when the coupled step begins,
+// and the fluid's values turned into the lab for them (docs/cfd-dem.md, "Rotating frame").
 #include <cstddef>
 #include <memory>
 #include <span>
@@ -34,8 +36,8 @@ class CfdDemCoupling final : public Coupling {
   void save(StateArchive& archive, const std::string& prefix) const override;
   void restore(const StateArchive& archive, const std::string& prefix) override;
 
-  // Before the fluid steps: D_i of the last step, the grains' void fraction and drag.
-  void exchange_with_fluid(double dt);
+  // Before the fluid steps at `time`: D_i of the last step, the grains' void fraction and drag.
+  void exchange_with_fluid(double time, double dt);
   // Before the grains step: their held forces from the fluid's new state.
   void exchange_with_grains(double dt);
 
@@ -64,6 +66,8 @@ class CfdDemCoupling final : public Coupling {
   void set_grain_forces(double dt);
   Vec3 virtual_mass(std::size_t p, std::size_t id, const Vec3& fluid_velocity, double dt) const;
   void set_fluid_source(double dt);
+  // The grain's velocity relative to the frame, in its directions.
+  Vec3 relative_velocity(std::size_t p) const;
 
   cfd::CfdSolver& fluid_;
   std::size_t fluid_method_;
@@ -81,6 +85,10 @@ class CfdDemCoupling final : public Coupling {
   std::vector<double> void_fraction_;  // the cells', as last mapped
   std::vector<double> row_volumes_;    // V_i in the grains' order when mapped
   std::vector<double> row_radii_;      // the radius of V_i's sphere, likewise
+  geometry::RigidPose frame_;          // the fluid's frame when the coupled step began
+  Vec3 frame_spin_ = Vec3::Zero();     // its Ω in its own directions
+  std::vector<Vec3> frame_positions_;  // the grains' places in the frame when mapped
+  std::vector<Vec3> pushes_;           // K_i v_i - D_i / Δt per grain, in the frame
   cfd::FaceArrays gradient_;           // (∇p)_f before the grains step
   std::size_t clipped_ = 0;
   // Per grain in the order of the last mapping (the grains do not move before they step):

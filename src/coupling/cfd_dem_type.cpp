@@ -70,12 +70,6 @@ std::shared_ptr<io::CouplingSection> CfdDemType::read(io::Reader& item,
     throw io::case_error(the_case, "time.sub_steps.cfd",
                          "with a cfd_dem coupling the fluid takes one step per step of the run "
                          "(the grains sub-cycle: time.sub_steps.dem)");
-  if (the_case.section<cfd::CfdSection>("cfd").config.frame_wall >= 0)
-    throw io::case_error(
-        the_case, "cfd.rotating_frame",
-        "a cfd_dem coupling takes the fluid in the lab frame only so far: the "
-        "grains' mapping into a rotating grid is not yet written (docs/cfd-dem.md, "
-        "\"Status\")");
   auto section = std::make_shared<CfdDemSection>();
   CfdDemSettings& s = section->settings;
   s.drag = item.choice("drag", s.drag, drag_law_registry().names());

@@ -243,7 +243,8 @@ void DemSolver::half_kick(std::size_t i, double dt, bool superquadric_spins) {
   Vec3& v = store_.velocity()[i];
   Vec3 load = (*force_)[i];
   if (external_.force) {
-    const Vec3 external = (*external_.force)[i] - (*external_.drag)[i] * v;
+    const Vec3 turning = external_.spin.cross(store_.position()[i] - external_.axis_point);
+    const Vec3 external = (*external_.force)[i] + (*external_.drag)[i] * (turning - v);
     (*external_.impulse)[i] += 0.5 * dt * external;
     load += external;
   }

@@ -54,6 +54,11 @@ class DemSolver final : public Solver {
   // from the next step on; returns them for the caller to set and read. Call at set-up, before
   // a restore.
   ExternalForces enable_external_forces();
+  // The rigid rotation Ω × (x - a) in the external forces' drag (dem/external_forces.hpp).
+  void set_external_rotation(const Vec3& spin, const Vec3& axis_point) {
+    external_.spin = spin;
+    external_.axis_point = axis_point;
+  }
 
   // While frozen the walls stay where their motions put them at t = 0 (settling).
   void freeze_walls(bool frozen) { walls_frozen_ = frozen; }

@@ -83,7 +83,7 @@ void momentum_is_kept(const std::string& item) {
   for (int step = 0; step < 60; ++step) {
     // Measured with the void fraction the fluid's last step went to (the exchange maps anew).
     const Vec3 before = fluid_momentum(fluid.fluid()) + grain_momentum(grains);
-    coupling.exchange_with_fluid(dt);
+    coupling.exchange_with_fluid(t, dt);
     const Vec3 total = before - coupling.deferred_momentum();
     largest = std::max(largest, (total - start).norm() / scale);
     deferred = std::max(deferred, coupling.deferred_momentum().norm() / scale);
@@ -113,7 +113,7 @@ TEST(CfdDemCoupling, VoidFractionHoldsTheGrainsVolume) {
   const TempDir dir;
   const io::Case the_case = test_support::load_case_text(dir, periodic_box("{type: cfd_dem}"));
   app::Simulation simulation = app::build_simulation(the_case);
-  dynamic_cast<CfdDemCoupling&>(*simulation.couplings[0]).exchange_with_fluid(1e-4);
+  dynamic_cast<CfdDemCoupling&>(*simulation.couplings[0]).exchange_with_fluid(0.0, 1e-4);
   const auto& fluid = dynamic_cast<cfd::CfdSolver&>(*simulation.methods[0].solver).fluid();
   double deficit = 0.0;
   for (const double eps : fluid.void_fraction())
