@@ -33,6 +33,11 @@ void print_parameters(const Simulation& simulation, const io::Case& the_case) {
     for (const auto& [name, value] : simulation.methods[m].solver->derived_parameters())
       fmt::print(stderr, "  {:<24} {:.6g}\n", name, value);
   }
+  for (std::size_t k = 0; k < simulation.couplings.size(); ++k) {
+    fmt::print(stderr, "  couplings[{}]:\n", k);
+    for (const auto& [name, value] : simulation.couplings[k]->derived_parameters())
+      fmt::print(stderr, "  {:<24} {:.6g}\n", name, value);
+  }
 }
 
 void print_warnings(const Simulation& simulation) {

@@ -225,6 +225,9 @@ void Runner::write_metadata(const io::RunSummary& summary) const {
                        {"sub_steps", case_.methods[m].sub_steps},
                        {"particles", method.store->size()}});
   }
+  for (std::size_t k = 0; k < simulation_.couplings.size(); ++k)
+    for (const auto& [parameter, value] : simulation_.couplings[k]->derived_parameters())
+      parameters[fmt::format("couplings[{}].{}", k, parameter)] = value;
   nlohmann::json figures = nlohmann::json::object();
   nlohmann::json units = nlohmann::json::object();
   for (const auto& [name, value] : figures_.values()) {

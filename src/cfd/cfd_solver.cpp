@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "cfd/blocked_cells.hpp"
+#include "cfd/face_stencil.hpp"
 #include "core/error.hpp"
 #include "particles/store_state.hpp"
 
@@ -166,9 +167,10 @@ std::map<std::string, double> CfdSolver::derived_parameters() const {
   return parameters;
 }
 
-// Velocity (3 components) at the cell centres, pressure, void fraction and the open flag, per
-// cell; in a rotating frame the image turns with the grid (its direction matrix), the velocity
-// is the lab's and relative_velocity the velocity relative to the frame, both in lab directions.
+// Velocity (3 components) at the cell centres, pressure, void fraction, the grains' source S_p
+// (3 components), the viscosity and the open flag, per cell; in a rotating frame the image turns
+// with the grid (its direction matrix), the velocity is the lab's and relative_velocity the
+// velocity relative to the frame, both in lab directions.
 const GridFrame* CfdSolver::grid_frame() {
   const grid::StaggeredGrid& grid = fluid_->grid();
   const geometry::RigidPose pose = frame_motion_.pose(time_);
@@ -190,15 +192,42 @@ const GridFrame* CfdSolver::grid_frame() {
     for (int a = 0; a < 3; ++a)
       frame_velocity_[3 * c + static_cast<std::size_t>(a)] = lab[a];
   }
+  grain_source_cells();
   frame_.origin = pose.place(grid.origin());
   frame_.direction = pose.rotation;
   frame_.cell_arrays = {{"velocity", 3, frame_velocity_},
                         {"pressure", 1, fluid_->pressure()},
                         {"void_fraction", 1, fluid_->void_fraction()},
+                        {"grain_source", 3, frame_grain_source_},
+                        {"viscosity", 1, fluid_->viscosity()},
                         {"open", 1, frame_open_}};
   if (frame_motion_.rotating())
     frame_.cell_arrays.push_back({"relative_velocity", 3, frame_relative_velocity_});
   return &frame_;
+}
+
+// S_p = S_e - K_f u, the grains' force on the fluid per unit volume (docs/cfd-dem.md, "The
+// source S_p"), at the cell centres (the mean of the faces on each axis), in lab directions.
+void CfdSolver::grain_source_cells() {
+  const grid::StaggeredGrid& grid = fluid_->grid();
+  const FaceArrays& k = fluid_->drag_coefficient();
+  const FaceArrays& source = fluid_->grain_source();
+  const FaceArrays& u = fluid_->velocity();
+  const Mat3 turn = frame_motion_.pose(time_).rotation;
+  frame_grain_source_.assign(3 * grid.cell_count(), 0.0);
+  for (const std::size_t c : open_cells_) {
+    const auto cell = grid.cell_coordinates(c);
+    Vec3 force = Vec3::Zero();
+    for (int a = 0; a < grid.dimensions(); ++a) {
+      Coordinates upper = cell;
+      upper[a] = grid.wrap_face(a, cell[a] + 1);
+      for (const std::size_t f : {face_index(grid, a, cell), face_index(grid, a, upper)})
+        force[a] += 0.5 * (source[a][f] - k[a][f] * u[a][f]);
+    }
+    const Vec3 lab = turn * force;
+    for (int a = 0; a < 3; ++a)
+      frame_grain_source_[3 * c + static_cast<std::size_t>(a)] = lab[a];
+  }
 }
 
 void CfdSolver::save(StateArchive& archive, const std::string& prefix) const {

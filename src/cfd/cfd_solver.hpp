@@ -45,6 +45,7 @@ class CfdSolver final : public Solver {
   void lay_out_cells();
   void update_cells();
   void set_frame(double dt);
+  void grain_source_cells();
 
   ParticleStore& store_;
   Domain domain_;
@@ -59,6 +60,7 @@ class CfdSolver final : public Solver {
   GridFrame frame_;
   std::vector<double> frame_velocity_;
   std::vector<double> frame_relative_velocity_;
+  std::vector<double> frame_grain_source_;
   std::vector<double> frame_open_;
 };
 

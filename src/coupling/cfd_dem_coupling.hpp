@@ -33,6 +33,9 @@ class CfdDemCoupling final : public Coupling {
                  std::size_t grain_method, const CfdDemSettings& settings, const Vec3& gravity);
 
   void before_method(std::size_t m, double time, double dt) override;
+  std::map<std::string, double> derived_parameters() const override {
+    return {{"kernel radius [m]", radius_}};
+  }
   void save(StateArchive& archive, const std::string& prefix) const override;
   void restore(const StateArchive& archive, const std::string& prefix) override;
 

@@ -6,6 +6,8 @@
 // steps (`before_method`, with the method's index in the case's `solver`), so that a coupling
 // can hand a method what another method has just computed; it saves its state in checkpoints.
 #include <cstddef>
+#include <map>
+#include <string>
 
 #include "core/state_archive.hpp"
 
@@ -19,6 +21,9 @@ class Coupling {
   // Before method `m` takes its steps over [time, time + dt] (after the methods before it in
   // `solver` have taken theirs).
   virtual void before_method(std::size_t /*m*/, double /*time*/, double /*dt*/) {}
+  // Figures the coupling derived from the case (its kernel's width), for run.json and the
+  // console, by name with their unit.
+  virtual std::map<std::string, double> derived_parameters() const { return {}; }
   // The coupling's own state (averaging windows, lagged fields), for checkpoints.
   virtual void save(StateArchive& /*archive*/, const std::string& /*prefix*/) const {}
   virtual void restore(const StateArchive& /*archive*/, const std::string& /*prefix*/) {}

@@ -6,6 +6,8 @@
 // checkpoint; the case errors name their key.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 #include <string>
 
@@ -109,6 +111,41 @@ TEST(CfdDemCoupling, MomentumOfFluidAndGrainsIsKeptToRoundOff) {
   momentum_is_kept("{type: cfd_dem, void_fraction: divided}");
 }
 
+// The frames' `grain_source`, S_p at the cell centres, holds the total force the faces' S_e -
+// K_f u give the fluid: Σ_c S_p,c V_c = Σ_f (S_e,f - K_f u_f) V over the open faces.
+TEST(CfdDemCoupling, TheFramesGrainSourceHoldsTheGrainsForceOnTheFluid) {
+  const TempDir dir;
+  const io::Case the_case = test_support::load_case_text(dir, periodic_box("{type: cfd_dem}"));
+  app::Simulation simulation = app::build_simulation(the_case);
+  auto& solver = dynamic_cast<cfd::CfdSolver&>(*simulation.methods[0].solver);
+  ParticleStore& grains = *simulation.methods[1].store;
+  for (std::size_t i = 0; i < grains.size(); ++i)
+    grains.velocity()[i] = Vec3(0.2, -0.1, 0.05);
+  dynamic_cast<CfdDemCoupling&>(*simulation.couplings[0]).exchange_with_fluid(0.0, 1e-3);
+  solver.step(1e-3);
+  const cfd::FluidSolver& fluid = solver.fluid();
+  const double volume = fluid.grid().cell_volume();
+  Vec3 faces = Vec3::Zero();
+  for (int a = 0; a < 3; ++a)
+    for (std::size_t f = 0; f < fluid.velocity()[a].size(); ++f)
+      if (fluid.mask().open_face[a][f])
+        faces[a] += volume * (fluid.grain_source()[a][f] -
+                              fluid.drag_coefficient()[a][f] * fluid.velocity()[a][f]);
+  Vec3 cells = Vec3::Zero();
+  bool found = false;
+  for (const FrameArray& array : solver.grid_frame()->cell_arrays) {
+    if (array.name != "grain_source")
+      continue;
+    found = true;
+    for (std::size_t c = 0; c < fluid.grid().cell_count(); ++c)
+      for (int a = 0; a < 3; ++a)
+        cells[a] += volume * array.values[3 * c + static_cast<std::size_t>(a)];
+  }
+  ASSERT_TRUE(found);
+  EXPECT_GT(faces.norm(), 0.0);
+  EXPECT_LT((cells - faces).norm(), 1e-12 * faces.norm());
+}
+
 TEST(CfdDemCoupling, VoidFractionHoldsTheGrainsVolume) {
   const TempDir dir;
   const io::Case the_case = test_support::load_case_text(dir, periodic_box("{type: cfd_dem}"));
@@ -157,6 +194,9 @@ TEST(CfdDemCoupling, TheSecondHalfFromACheckpointIsTheRunThatWentThrough) {
     EXPECT_TRUE(test_support::read_file(dir / "whole" / "frames" / frame) ==
                 test_support::read_file(dir / "parts" / "frames" / frame))
         << frame;
+  // The kernel's support: 2 d_max = 6 mm raised to 1.5 h = 7.5 mm.
+  const auto run = nlohmann::json::parse(test_support::read_file(dir / "whole" / "run.json"));
+  EXPECT_DOUBLE_EQ(run.at("derived").at("couplings[0].kernel radius [m]").get<double>(), 0.0075);
 }
 
 std::string key_of_error(const std::string& text) {
