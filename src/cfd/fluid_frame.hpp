@@ -28,6 +28,8 @@ class FluidFrame {
   explicit FluidFrame(std::shared_ptr<const geometry::Motion> motion);
 
   bool rotating() const { return motion_ != nullptr; }
+  // Whether the frame turns with `motion` itself (the frame's own body).
+  bool follows(const geometry::Motion& motion) const { return motion_.get() == &motion; }
   // The frame's pose at time t (the identity for the lab).
   geometry::RigidPose pose(double time) const;
   FrameForces forces(double time, const Vec3& gravity) const;

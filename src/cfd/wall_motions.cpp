@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <utility>
+#include <vector>
 
 namespace partimix::cfd {
 namespace {
@@ -39,31 +40,36 @@ int WallMotions::first_not_in_place(
 }
 
 // A frame point x is, at time t, at the wall's body point start + R_wᵀ (place(x) - origin_w).
+// A wall at rest in the lab seen from the lab, or the frame's own body, is in place without a
+// look; otherwise the cells within 2 h of its surface at t = 0 are found once and looked at again
+// at each sampled time.
 bool WallMotions::in_place(const grid::StaggeredGrid& grid, std::size_t wall,
                            const geometry::Surface& surface, const InPlaceSamples& samples) const {
+  const geometry::Motion& motion = *motions_[wall];
+  if ((!frame_.rotating() && !motion.moves()) || frame_.follows(motion))
+    return true;
   double h = 0.0;
   for (int axis = 0; axis < grid.dimensions(); ++axis)
     h = std::max(h, grid.spacing(axis));
   const double reach = 2.0 * h;
-  bool kept = true;
+  std::vector<std::pair<Vec3, double>> near;  // cell centre, gap at t = 0
+  grid.for_each_cell([&](const std::array<int, 3>& c, std::size_t) {
+    const Vec3 x = grid.cell_centre(c[0], c[1], c[2]);
+    geometry::SurfacePoint point;
+    if (surface.nearest(x, reach, point) && std::abs(point.gap) <= reach)
+      near.emplace_back(x, point.gap);
+  });
   for (const double fraction : kTurnFractions) {
     const double time = samples.start + fraction * samples.period;
     const geometry::RigidPose frame = frame_.pose(time);
-    const geometry::RigidPose body = motions_[wall]->pose(time);
-    grid.for_each_cell([&](const std::array<int, 3>& c, std::size_t) {
-      if (!kept)
-        return;
-      const Vec3 x = grid.cell_centre(c[0], c[1], c[2]);
-      geometry::SurfacePoint at_start;
-      if (!surface.nearest(x, reach, at_start) || std::abs(at_start.gap) > reach)
-        return;
+    const geometry::RigidPose body = motion.pose(time);
+    for (const auto& [x, gap] : near) {
       const Vec3 seen =
           body.start_origin + body.rotation.transpose() * (frame.place(x) - body.origin);
       geometry::SurfacePoint now;
-      kept = surface.nearest(seen, reach, now) && std::abs(now.gap - at_start.gap) <= 1e-6 * h;
-    });
-    if (!kept)
-      return false;
+      if (!surface.nearest(seen, reach, now) || std::abs(now.gap - gap) > 1e-6 * h)
+        return false;
+    }
   }
   return true;
 }
