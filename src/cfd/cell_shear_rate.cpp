@@ -17,7 +17,8 @@ double centre_value(const grid::StaggeredGrid& grid, const FaceArrays& velocity,
 
 // ∂u_a/∂x_b at cell c (b ≠ a): the neighbours' centre values, or a wall's half a cell away.
 double cross_gradient(const grid::StaggeredGrid& grid, const FlowMask& mask, const BoxSides& sides,
-                      const FaceArrays& velocity, int a, int b, const Coordinates& c) {
+                      const WallFaces& walls, const FaceArrays& velocity, int a, int b,
+                      const Coordinates& c) {
   const double h = grid.spacing(b);
   const double own = centre_value(grid, velocity, a, c);
   double value[2];
@@ -32,8 +33,10 @@ double cross_gradient(const grid::StaggeredGrid& grid, const FlowMask& mask, con
       continue;
     }
     distance[s] = 0.5 * h;
-    if (n[b] >= 0) {
-      value[s] = 0.0;  // a blocked cell, at rest
+    if (n[b] >= 0) {  // a blocked cell: its wall's velocity on the face between
+      Coordinates face = c;
+      face[b] = side < 0 ? c[b] : grid.wrap_face(b, c[b] + 1);
+      value[s] = walls.at(b, face_index(grid, b, face))[a];
       continue;
     }
     const BoxSide& wall = box_side(sides, b, side);
@@ -45,7 +48,8 @@ double cross_gradient(const grid::StaggeredGrid& grid, const FlowMask& mask, con
 }  // namespace
 
 void cell_shear_rates(const grid::StaggeredGrid& grid, const FlowMask& mask, const BoxSides& sides,
-                      const FaceArrays& velocity, std::vector<double>& out) {
+                      const WallFaces& walls, const FaceArrays& velocity,
+                      std::vector<double>& out) {
   out.assign(grid.cell_count(), 0.0);
   const int dims = grid.dimensions();
   grid.for_each_cell([&](const Coordinates& c, std::size_t index) {
@@ -55,7 +59,7 @@ void cell_shear_rates(const grid::StaggeredGrid& grid, const FlowMask& mask, con
     for (int a = 0; a < dims; ++a)
       for (int b = 0; b < dims; ++b) {
         if (a != b) {
-          g[a][b] = cross_gradient(grid, mask, sides, velocity, a, b, c);
+          g[a][b] = cross_gradient(grid, mask, sides, walls, velocity, a, b, c);
           continue;
         }
         Coordinates upper = c;

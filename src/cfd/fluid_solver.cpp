@@ -59,7 +59,8 @@ void FluidSolver::set_side_faces() {
 }
 
 void FluidSolver::list_wall_faces() {
-  for (int axis = 0; axis < grid_.dimensions(); ++axis)
+  for (int axis = 0; axis < grid_.dimensions(); ++axis) {
+    wall_faces_.slot[axis].assign(grid_.face_count(axis), -1);
     grid_.for_each_face(axis, [&](const Coordinates& f, std::size_t index) {
       if (mask_.open_face[axis][index] || mask_.outlet_face[axis][index])
         return;
@@ -73,20 +74,25 @@ void FluidSolver::list_wall_faces() {
         cell_beside(grid_, axis, f, side, cell);
         const std::size_t c = cell_index(grid_, cell);
         if (!mask_.open_cell[c]) {
-          wall_faces_[axis].emplace_back(index, c);
+          wall_faces_.slot[axis][index] = static_cast<std::int32_t>(wall_faces_.faces[axis].size());
+          wall_faces_.faces[axis].emplace_back(index, c);
+          wall_faces_.velocity[axis].push_back(Vec3::Zero());
           return;
         }
       }
     });
+  }
 }
 
 void FluidSolver::set_wall_velocities(
     const std::function<Vec3(const Vec3&, std::size_t)>& velocity_at) {
   predictor_.set_wall_velocities(grid_, velocity_at);
   for (int axis = 0; axis < grid_.dimensions(); ++axis)
-    for (const auto& [face, cell] : wall_faces_[axis]) {
+    for (std::size_t k = 0; k < wall_faces_.faces[axis].size(); ++k) {
+      const auto [face, cell] = wall_faces_.faces[axis][k];
       const auto f = grid_.face_coordinates(axis, face);
-      velocity_[axis][face] = velocity_at(grid_.face_centre(axis, f[0], f[1], f[2]), cell)[axis];
+      wall_faces_.velocity[axis][k] = velocity_at(grid_.face_centre(axis, f[0], f[1], f[2]), cell);
+      velocity_[axis][face] = wall_faces_.velocity[axis][k][axis];
     }
 }
 
@@ -166,7 +172,7 @@ void FluidSolver::explicit_terms(double dt) {
 void FluidSolver::update_viscosity() {
   if (!rheology_)
     return;
-  cell_shear_rates(grid_, mask_, sides_, velocity_, shear_rate_);
+  cell_shear_rates(grid_, mask_, sides_, wall_faces_, velocity_, shear_rate_);
   for (std::size_t c = 0; c < cell_viscosity_.size(); ++c)
     cell_viscosity_[c] = mask_.open_cell[c] ? rheology_->viscosity(shear_rate_[c]) : 0.0;
 }

@@ -22,6 +22,7 @@
 #include "cfd/fluid_frame.hpp"
 #include "cfd/momentum_predictor.hpp"
 #include "cfd/pressure_projection.hpp"
+#include "cfd/wall_faces.hpp"
 #include "core/linear_solve.hpp"
 #include "core/vec.hpp"
 #include "grid/staggered_grid.hpp"
@@ -113,8 +114,7 @@ class FluidSolver {
   BoxSides sides_;
   FluidSettings settings_;
   FaceArrays velocity_;
-  // Per axis: the faces of blocked cells inside the box, each with a blocked cell beside it.
-  std::array<std::vector<std::pair<std::size_t, std::size_t>>, 3> wall_faces_;
+  WallFaces wall_faces_;
   FaceArrays previous_velocity_;  // u^{n-1}
   FaceArrays extrapolated_;       // (3 u^n - u^{n-1}) / 2
   FrameForces frame_forces_;

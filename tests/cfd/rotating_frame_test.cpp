@@ -33,6 +33,7 @@
 #include "app/simulation.hpp"
 #include "cfd/cfd_solver.hpp"
 #include "support/case_run.hpp"
+#include "support/circular_flow_error.hpp"
 
 namespace partimix::cfd {
 namespace {
@@ -185,21 +186,10 @@ double exact_pressure(double r) {
 // cylinder's: less Ω r along e_θ) at the face centres; the solution is the same at every angle,
 // so the frame's turn does not enter.
 double face_velocity_error(const FluidSolver& fluid, bool rotating_frame) {
-  const grid::StaggeredGrid& grid = fluid.grid();
-  double squares = 0.0;
-  std::size_t count = 0;
-  for (int a = 0; a < 2; ++a)
-    grid.for_each_face(a, [&](const std::array<int, 3>& f, std::size_t index) {
-      if (!fluid.mask().open_face[a][index])
-        return;
-      const Vec3 x = grid.face_centre(a, f[0], f[1], f[2]);
-      const double r = std::hypot(x.x(), x.y());
-      const double speed = exact_speed(r) - (rotating_frame ? kOmega * r : 0.0);
-      const Vec3 exact(-speed * x.y() / r, speed * x.x() / r, 0.0);
-      squares += std::pow(fluid.velocity()[a][index] - exact[a], 2);
-      ++count;
-    });
-  return std::sqrt(squares / static_cast<double>(count)) / (kOmega * kR2);
+  return test_support::circular_flow_rms(
+             fluid,
+             [&](double r) { return exact_speed(r) - (rotating_frame ? kOmega * r : 0.0); }) /
+         (kOmega * kR2);
 }
 
 double pressure_error(const FluidSolver& fluid) {
