@@ -27,12 +27,15 @@ double largest_spacing(const grid::StaggeredGrid& grid) {
 // kernel_radius (default 2 d_max), at least 1.5 h_max (docs/cfd-dem.md, "Void fraction").
 CfdDemCoupling::CfdDemCoupling(cfd::CfdSolver& fluid, std::size_t fluid_method,
                                dem::DemSolver& grains, std::size_t grain_method,
-                               const CfdDemSettings& settings, const Vec3& gravity)
+                               ParticleStore& grain_store, const CfdDemSettings& settings,
+                               const Vec3& gravity)
     : fluid_(fluid),
       fluid_method_(fluid_method),
       grains_(grains),
       grain_method_(grain_method),
       external_(grains.enable_external_forces()),
+      grain_void_fraction_(&grain_store.add_scalar("fluid_void_fraction", "-").values),
+      grain_fluid_force_(&grain_store.add_vector("fluid_force", "N").values),
       settings_(settings),
       gravity_(gravity),
       law_(drag_law_registry().create(settings.drag)) {
@@ -204,7 +207,8 @@ void CfdDemCoupling::set_drag() {
 // F_i = K_i u_i + the pressure's or buoyancy's force, u_i and ∇p from the fluid's new state,
 // held for the grains' sub-steps, whose length must not exceed the grain's relaxation time
 // m_i / K_i. In a rotating frame u_i's part Ω × (x_i - a) is left to the DEM, which takes it at
-// the grain's place in each sub-step (dem/external_forces.hpp).
+// the grain's place in each sub-step (dem/external_forces.hpp). The frames' fields get ε_i and
+// the force K_i (u_i - v_i) + the others as set.
 void CfdDemCoupling::set_grain_forces(double dt) {
   const ParticleStore& store = grains_.particles();
   const double density = fluid_.fluid().settings().density;
@@ -235,6 +239,9 @@ void CfdDemCoupling::set_grain_forces(double dt) {
     (*external_.force)[p] = drag_[p] * (fluid_velocities_[p] - turning) + other_force_[p];
     (*external_.drag)[p] = drag_[p];
     (*external_.impulse)[p] = Vec3::Zero();
+    (*grain_void_fraction_)[p] = s.void_fraction;
+    (*grain_fluid_force_)[p] =
+        drag_[p] * (fluid_velocities_[p] - store.velocity()[p]) + other_force_[p];
   }
 }
 

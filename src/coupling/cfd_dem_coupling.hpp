@@ -28,9 +28,11 @@ namespace partimix::coupling {
 
 class CfdDemCoupling final : public Coupling {
  public:
-  // `fluid_method` and `grain_method`: the methods' indices in the case's `solver`.
+  // `fluid_method` and `grain_method`: the methods' indices in the case's `solver`; `grain_store`
+  // the grains' store, which gets the fields fluid_void_fraction and fluid_force for the frames.
   CfdDemCoupling(cfd::CfdSolver& fluid, std::size_t fluid_method, dem::DemSolver& grains,
-                 std::size_t grain_method, const CfdDemSettings& settings, const Vec3& gravity);
+                 std::size_t grain_method, ParticleStore& grain_store,
+                 const CfdDemSettings& settings, const Vec3& gravity);
 
   void before_method(std::size_t m, double time, double dt) override;
   std::map<std::string, double> derived_parameters() const override {
@@ -77,6 +79,8 @@ class CfdDemCoupling final : public Coupling {
   dem::DemSolver& grains_;
   std::size_t grain_method_;
   dem::ExternalForces external_;
+  std::vector<double>* grain_void_fraction_;  // ε at each grain, for the frames
+  std::vector<Vec3>* grain_fluid_force_;      // the fluid's force on each grain as set [N]
   CfdDemSettings settings_;
   Vec3 gravity_;
   std::unique_ptr<DragLaw> law_;

@@ -101,7 +101,8 @@ std::unique_ptr<Coupling> CfdDemType::build(const io::Case& the_case, const io::
   const std::size_t g = method_index(the_case, "dem");
   auto& fluid = dynamic_cast<cfd::CfdSolver&>(*methods[f].solver);
   auto& grains = dynamic_cast<dem::DemSolver&>(*methods[g].solver);
-  auto coupling = std::make_unique<CfdDemCoupling>(fluid, f, grains, g, settings, the_case.gravity);
+  auto coupling = std::make_unique<CfdDemCoupling>(fluid, f, grains, g, *methods[g].store, settings,
+                                                   the_case.gravity);
   check_kernel_size(the_case, spec, fluid, grains.particles().size(), coupling->kernel_radius());
   return coupling;
 }
