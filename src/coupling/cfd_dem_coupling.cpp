@@ -68,7 +68,6 @@ void CfdDemCoupling::before_method(std::size_t m, double time, double dt) {
 // step).
 void CfdDemCoupling::exchange_with_fluid(double time, double dt) {
   frame_ = fluid_.frame().pose(time);
-  frame_spin_ = frame_.rotation.transpose() * frame_.angular_velocity;
   deferred_.assign(grains_.particles().size(), Vec3::Zero());
   if (started_)
     follow_grains(last_dt_);

@@ -93,7 +93,6 @@ class CfdDemCoupling final : public Coupling {
   std::vector<double> row_volumes_;    // V_i in the grains' order when mapped
   std::vector<double> row_radii_;      // the radius of V_i's sphere, likewise
   geometry::RigidPose frame_;          // the fluid's frame when the coupled step began
-  Vec3 frame_spin_ = Vec3::Zero();     // its Ω in its own directions
   std::vector<Vec3> frame_positions_;  // the grains' places in the frame when mapped
   std::vector<Vec3> pushes_;           // K_i v_i - D_i / Δt per grain, in the frame
   cfd::FaceArrays gradient_;           // (∇p)_f before the grains step
