@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "eight_cubic_metre_drum.hpp"
 #include "geometry/truck_drum.hpp"
 
 namespace partimix::geometry {
@@ -20,29 +21,12 @@ namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 
-// An 8 m³ drum's proportions: head 0.9 m, the cylinder 1.15 m for 1.6 m, the cones 1.8 and
-// 2.0 m long, the opening 0.35 m; seed 004's initial blades (78°, offsets 100/85/76°).
-TruckDrumParameters eight_cubic_metres() {
-  TruckDrumParameters p;
-  p.head_radius = 0.9;
-  p.front_length = 1.8;
-  p.radius = 1.15;
-  p.cylinder_length = 1.6;
-  p.rear_length = 2.0;
-  p.opening_radius = 0.35;
-  p.helix_angle = 78.0 * kDegree;
-  p.blade_height = 0.25;
-  p.blade_thickness = 0.008;
-  p.offset_angles = {100.0 * kDegree, 85.0 * kDegree, 76.0 * kDegree};
-  return p;
-}
-
 Vec3 at(double z, double theta, double rho) {
   return {rho * std::cos(theta), rho * std::sin(theta), z};
 }
 
 TEST(TruckDrum, ShellDistanceFollowsEachPartsClosedForm) {
-  const TruckDrumGeometry drum(eight_cubic_metres());
+  const TruckDrumGeometry drum(eight_cubic_metre_drum());
   EXPECT_NEAR(drum.length(), 5.4, 1e-15);
   // Cylinder: ρ - R, inside and out, at any angle.
   for (const double rho : {1.0, 1.1, 1.2})
@@ -67,7 +51,7 @@ TEST(TruckDrum, ShellDistanceFollowsEachPartsClosedForm) {
 // The blade's curve on the shell, P(z) = (r cos θ_s, r sin θ_s, z), against the generatrix
 // G = (r' cos θ_s, r' sin θ_s, 1): their angle is β on every segment.
 TEST(TruckDrum, BladesMakeTheHelixAngleWithTheGeneratrix) {
-  const TruckDrumGeometry drum(eight_cubic_metres());
+  const TruckDrumGeometry drum(eight_cubic_metre_drum());
   const double h = 1e-5;
   for (int s = 0; s < 3; ++s)
     for (const double along : {0.3, 0.9, 1.5}) {
@@ -89,7 +73,7 @@ TEST(TruckDrum, BladesMakeTheHelixAngleWithTheGeneratrix) {
 }
 
 TEST(TruckDrum, BladeDistanceAcrossInsideAndBeyondTheStrip) {
-  const TruckDrumGeometry drum(eight_cubic_metres());
+  const TruckDrumGeometry drum(eight_cubic_metre_drum());
   const double t = 0.008;
   for (int s = 0; s < 3; ++s) {
     const double z = drum.segment_start(s) + 0.7;
@@ -126,13 +110,13 @@ TEST(TruckDrum, BladeDistanceAcrossInsideAndBeyondTheStrip) {
 }
 
 TEST(TruckDrum, BadParametersAreNamed) {
-  TruckDrumParameters p = eight_cubic_metres();
+  TruckDrumParameters p = eight_cubic_metre_drum();
   p.opening_radius = 1.3;
   EXPECT_THROW(TruckDrumGeometry{p}, std::invalid_argument);
-  p = eight_cubic_metres();
+  p = eight_cubic_metre_drum();
   p.helix_angle = 90.0 * kDegree;
   EXPECT_THROW(TruckDrumGeometry{p}, std::invalid_argument);
-  p = eight_cubic_metres();
+  p = eight_cubic_metre_drum();
   p.blade_height = 0.4;
   try {
     TruckDrumGeometry{p};
