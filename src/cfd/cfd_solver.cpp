@@ -147,9 +147,9 @@ void CfdSolver::set_frame(double dt) {
     fluid_->set_frame_forces(frame_motion_.forces(time_ + 0.5 * dt, config_.settings.gravity));
   if (!wall_motions_.any_moving())
     return;
-  const double end = time_ + dt;
+  wall_motions_.set_time(time_ + dt);
   fluid_->set_wall_velocities([&](const Vec3& x, std::size_t cell) {
-    return wall_motions_.velocity(static_cast<std::size_t>(wall_of_cell_[cell]), x, end);
+    return wall_motions_.velocity(static_cast<std::size_t>(wall_of_cell_[cell]), x);
   });
 }
 

@@ -38,8 +38,7 @@ FrameForces FluidFrame::forces(double time, const Vec3& gravity) const {
 }
 
 Vec3 lab_velocity(const geometry::RigidPose& pose, const Vec3& x, const Vec3& u) {
-  const Vec3 spin = pose.rotation.transpose() * pose.angular_velocity;
-  return pose.rotation * (u + spin.cross(x - pose.start_origin));
+  return pose.rotation * u + pose.velocity_at(pose.place(x));
 }
 
 }  // namespace partimix::cfd

@@ -39,7 +39,7 @@ class FluidFrame {
 };
 
 // The lab velocity of fluid at frame point x moving at u relative to the frame, in lab
-// directions: R (u + Ω × (x - a)).
+// directions: R u plus the frame's own velocity at the place of x.
 Vec3 lab_velocity(const geometry::RigidPose& pose, const Vec3& x, const Vec3& u);
 
 }  // namespace partimix::cfd

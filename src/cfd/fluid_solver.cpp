@@ -185,13 +185,13 @@ LinearSolve FluidSolver::step(double dt) {
   explicit_terms(dt);
   if (frame_forces_.rotating) {
     for (int a = 0; a < grid_.dimensions(); ++a)
-      for (std::size_t f = 0; f < velocity_[a].size(); ++f)
+      for (std::size_t f = 0; f < velocity_[a].size(); ++f) {
         extrapolated_[a][f] = 1.5 * velocity_[a][f] - 0.5 * previous_velocity_[a][f];
+        previous_velocity_[a][f] = velocity_[a][f];
+      }
     add_frame_forces(grid_, mask_, frame_forces_, settings_.density, void_fraction_, extrapolated_,
                      rhs_);
   }
-  for (int a = 0; a < grid_.dimensions(); ++a)
-    std::copy(velocity_[a].begin(), velocity_[a].end(), previous_velocity_[a].begin());
   momentum_solve_ = predictor_.solve(grid_, sides_, cell_void_fraction_, cell_viscosity_, diagonal_,
                                      rhs_, velocity_);
   extrapolate_to_outlets();

@@ -93,8 +93,8 @@ class FluidSolver {
   // which take the wall's velocity at their centre (docs/cfd.md, "Moving walls and the rotating
   // frame").
   void set_wall_velocities(const std::function<Vec3(const Vec3&, std::size_t)>& velocity_at);
-  // The velocity before the last step, u^{n-1}, which the Coriolis term's estimate takes; the
-  // same as velocity() before the first step.
+  // The velocity before the last step in a rotating frame, u^{n-1}, which the Coriolis term's
+  // estimate takes; the start's velocity before the first step and without rotation.
   const FaceArrays& previous_velocity() const { return previous_velocity_; }
   void restore_previous_velocity(const FaceArrays& velocity) { previous_velocity_ = velocity; }
 

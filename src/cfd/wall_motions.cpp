@@ -17,16 +17,22 @@ constexpr std::array<double, 5> kTurnFractions{0.1234, 0.2718, 0.4142, 0.5772, 0
 
 WallMotions::WallMotions(std::vector<std::shared_ptr<const geometry::Motion>> motions,
                          FluidFrame frame)
-    : motions_(std::move(motions)), frame_(std::move(frame)) {
-  any_moving_ = frame_.rotating() || std::any_of(motions_.begin(), motions_.end(),
-                                                 [](const auto& m) { return m->moves(); });
+    : motions_(std::move(motions)), frame_(std::move(frame)), wall_poses_(motions_.size()) {
+  any_moving_ = std::any_of(motions_.begin(), motions_.end(), [&](const auto& m) {
+    return !frame_.follows(*m) && (frame_.rotating() || m->moves());
+  });
 }
 
-Vec3 WallMotions::velocity(std::size_t wall, const Vec3& x, double time) const {
-  const geometry::RigidPose frame = frame_.pose(time);
-  const Vec3 lab = frame.place(x);
-  const Vec3 relative = motions_[wall]->pose(time).velocity_at(lab) - frame.velocity_at(lab);
-  return frame.rotation.transpose() * relative;
+void WallMotions::set_time(double time) {
+  frame_pose_ = frame_.pose(time);
+  for (std::size_t w = 0; w < motions_.size(); ++w)
+    wall_poses_[w] = motions_[w]->pose(time);
+}
+
+Vec3 WallMotions::velocity(std::size_t wall, const Vec3& x) const {
+  const Vec3 lab = frame_pose_.place(x);
+  const Vec3 relative = wall_poses_[wall].velocity_at(lab) - frame_pose_.velocity_at(lab);
+  return frame_pose_.rotation.transpose() * relative;
 }
 
 int WallMotions::first_not_in_place(

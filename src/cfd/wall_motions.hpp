@@ -27,11 +27,14 @@ class WallMotions {
  public:
   WallMotions(std::vector<std::shared_ptr<const geometry::Motion>> motions, FluidFrame frame);
 
-  // Whether any wall moves relative to the frame (a wall velocity is then set each step).
+  // Whether any wall moves relative to the frame (a wall velocity is then set each step); the
+  // frame's own body does not.
   bool any_moving() const { return any_moving_; }
-  // Wall w's velocity at frame point x and time t relative to the frame, in frame directions:
-  // Rᵀ (v_w(X) - v_frame(X)) with X = place(x).
-  Vec3 velocity(std::size_t wall, const Vec3& x, double time) const;
+  // Takes the frame's and the walls' poses at `time`, for velocity().
+  void set_time(double time);
+  // Wall w's velocity at frame point x relative to the frame, in frame directions, at the time
+  // last set: Rᵀ (v_w(X) - v_frame(X)) with X = place(x).
+  Vec3 velocity(std::size_t wall, const Vec3& x) const;
   // The first wall whose surface, seen from the frame, is not where it was at t = 0 at one of
   // the sampled times (by more than 1e-6 h at the centre of a cell within 2 h of it); -1 if none.
   int first_not_in_place(const grid::StaggeredGrid& grid,
@@ -45,6 +48,8 @@ class WallMotions {
   std::vector<std::shared_ptr<const geometry::Motion>> motions_;
   FluidFrame frame_;
   bool any_moving_ = false;
+  geometry::RigidPose frame_pose_;               // at the time last set
+  std::vector<geometry::RigidPose> wall_poses_;  // likewise, by wall
 };
 
 }  // namespace partimix::cfd

@@ -9,17 +9,6 @@
 namespace partimix::geometry {
 namespace {
 
-// The distance from (z, r) to the segment from (z_a, r_a) to (z_b, r_b) in the meridian plane.
-double segment_distance(double z, double r, double z_a, double r_a, double z_b, double r_b) {
-  const double dz = z_b - z_a;
-  const double dr = r_b - r_a;
-  const double length_squared = dz * dz + dr * dr;
-  double t = 0.0;
-  if (length_squared > 0.0)
-    t = std::clamp(((z - z_a) * dz + (r - r_a) * dr) / length_squared, 0.0, 1.0);
-  return std::hypot(z - (z_a + t * dz), r - (r_a + t * dr));
-}
-
 // How far a circle of radius r normal to the unit axis reaches along each coordinate axis.
 Vec3 circle_extent(const Vec3& unit_axis, double r) {
   const Vec3 squares = unit_axis.cwiseProduct(unit_axis);
@@ -45,9 +34,9 @@ Cone::Cone(const Vec3& axis_point, const Vec3& axis, double radius_0, double rad
 
 double Cone::signed_distance(const Vec3& x) const {
   const Meridian m = meridian(x, axis_point_, axis_);
-  const double side = segment_distance(m.z, m.r, 0.0, radius_0_, height_, radius_1_);
-  const double bottom = segment_distance(m.z, m.r, 0.0, 0.0, 0.0, radius_0_);
-  const double top = segment_distance(m.z, m.r, height_, 0.0, height_, radius_1_);
+  const double side = meridian_segment_distance(m.z, m.r, 0.0, radius_0_, height_, radius_1_);
+  const double bottom = meridian_segment_distance(m.z, m.r, 0.0, 0.0, 0.0, radius_0_);
+  const double top = meridian_segment_distance(m.z, m.r, height_, 0.0, height_, radius_1_);
   const double distance = std::min({side, bottom, top});
   const bool inside =
       m.z > 0.0 && m.z < height_ && m.r < radius_0_ + (radius_1_ - radius_0_) * (m.z / height_);

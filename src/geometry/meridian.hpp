@@ -3,6 +3,9 @@
 // cylinder): x = axis_point + z axis + r e_r, with r >= 0 the distance from the axis. Their
 // nearest-point and distance problems reduce to two dimensions in the meridian half-plane
 // (z, r) through x, and the answer is mapped back to 3D with e_r.
+#include <algorithm>
+#include <cmath>
+
 #include <Eigen/Geometry>  // unitOrthogonal
 
 #include "core/vec.hpp"
@@ -24,6 +27,18 @@ inline Meridian meridian(const Vec3& x, const Vec3& axis_point, const Vec3& unit
   m.r = radial.norm();
   m.e_r = m.r > 0.0 ? Vec3(radial / m.r) : unit_axis.unitOrthogonal();
   return m;
+}
+
+// The distance from (z, r) to the segment from (z_a, r_a) to (z_b, r_b) in the meridian plane.
+inline double meridian_segment_distance(double z, double r, double z_a, double r_a, double z_b,
+                                        double r_b) {
+  const double dz = z_b - z_a;
+  const double dr = r_b - r_a;
+  const double length_squared = dz * dz + dr * dr;
+  double t = 0.0;
+  if (length_squared > 0.0)
+    t = std::clamp(((z - z_a) * dz + (r - r_a) * dr) / length_squared, 0.0, 1.0);
+  return std::hypot(z - (z_a + t * dz), r - (r_a + t * dr));
 }
 
 }  // namespace partimix::geometry

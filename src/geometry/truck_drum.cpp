@@ -6,20 +6,14 @@
 #include <stdexcept>
 #include <string>
 
+#include "geometry/meridian.hpp"
+
 namespace partimix::geometry {
 namespace {
 
 void require_positive(double value, const char* name) {
   if (!(value > 0.0) || !std::isfinite(value))
     throw std::invalid_argument(std::string(name) + " must be above zero");
-}
-
-// The distance from (z, r) to the segment (z0, r0)-(z1, r1).
-double segment_distance(double z, double r, double z0, double r0, double z1, double r1) {
-  const double dz = z1 - z0;
-  const double dr = r1 - r0;
-  const double t = std::clamp(((z - z0) * dz + (r - r0) * dr) / (dz * dz + dr * dr), 0.0, 1.0);
-  return std::hypot(z - (z0 + t * dz), r - (r0 + t * dr));
 }
 
 }  // namespace
@@ -84,11 +78,11 @@ double TruckDrumGeometry::shell_distance(const Vec3& x) const {
   const double rho = std::hypot(x.x(), x.y());
   const double l = length();
   const double zc = starts_[2];
-  double d = segment_distance(z, rho, 0.0, 0.0, 0.0, p_.head_radius);
-  d = std::min(d, segment_distance(z, rho, 0.0, p_.head_radius, starts_[1], p_.radius));
-  d = std::min(d, segment_distance(z, rho, starts_[1], p_.radius, zc, p_.radius));
-  d = std::min(d, segment_distance(z, rho, zc, p_.radius, l, p_.opening_radius));
-  d = std::min(d, segment_distance(z, rho, l, p_.opening_radius, l, 0.0));
+  double d = meridian_segment_distance(z, rho, 0.0, 0.0, 0.0, p_.head_radius);
+  d = std::min(d, meridian_segment_distance(z, rho, 0.0, p_.head_radius, starts_[1], p_.radius));
+  d = std::min(d, meridian_segment_distance(z, rho, starts_[1], p_.radius, zc, p_.radius));
+  d = std::min(d, meridian_segment_distance(z, rho, zc, p_.radius, l, p_.opening_radius));
+  d = std::min(d, meridian_segment_distance(z, rho, l, p_.opening_radius, l, 0.0));
   const bool inside = z > 0.0 && z < l && rho < radius_at(z);
   return inside ? -d : d;
 }
