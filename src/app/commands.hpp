@@ -19,5 +19,8 @@ struct RunArguments {
 int run_command(const RunArguments& arguments);
 int check_command(const std::string& case_file, const std::vector<std::string>& overrides);
 int plot_command(const std::filesystem::path& output_dir);
+// Writes each wall generated as a mesh (a truck drum) as <output_dir>/wall_<k>.stl.
+int stl_command(const std::string& case_file, const std::vector<std::string>& overrides,
+                const std::filesystem::path& output_dir);
 
 }  // namespace partimix::app

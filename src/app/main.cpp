@@ -50,6 +50,15 @@ int main(int argc, char** argv) {
   CLI::App* plot_cmd = cli.add_subcommand("plot", "Plot series.csv of an output folder to PNG");
   plot_cmd->add_option("outdir", plot_dir, "Output folder of a run")->required();
 
+  std::string stl_file;
+  std::vector<std::string> stl_overrides;
+  std::string stl_dir = ".";
+  CLI::App* stl_cmd =
+      cli.add_subcommand("stl", "Write the walls generated as meshes (truck_drum) as STL files");
+  stl_cmd->add_option("case", stl_file, "Case file (YAML)")->required();
+  stl_cmd->add_option("--set,-s", stl_overrides, "Override a case key: key.path=value");
+  stl_cmd->add_option("--out,-o", stl_dir, "Folder for wall_<k>.stl (default: .)");
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -62,5 +71,7 @@ int main(int argc, char** argv) {
     return app::check_command(check_file, check_overrides);
   if (sweep_cmd->parsed())
     return app::sweep_command(sweep);
+  if (stl_cmd->parsed())
+    return app::stl_command(stl_file, stl_overrides, stl_dir);
   return app::plot_command(plot_dir);
 }

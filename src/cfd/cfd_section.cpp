@@ -86,6 +86,8 @@ InPlaceSamples in_place_samples(const io::Case& the_case) {
   for (const io::WallSpec& wall : the_case.walls) {
     samples.start = std::max(samples.start, wall.motion.ramp_time);
     fastest = std::max({fastest, std::abs(wall.motion.rpm), std::abs(wall.motion.revolution_rpm)});
+    for (const geometry::SpeedChange& change : wall.motion.schedule)
+      fastest = std::max(fastest, std::abs(change.rpm));
   }
   if (fastest > 0.0)
     samples.period = 60.0 / fastest;

@@ -13,7 +13,7 @@ const Registry<Motion, const MotionConfig&>& motion_registry() {
     Registry<Motion, const MotionConfig&> r;
     r.add("fixed", [](const MotionConfig&) { return std::make_unique<FixedMotion>(); });
     r.add("rotation", [](const MotionConfig& c) {
-      return std::make_unique<RotationMotion>(c.axis_point, c.axis, c.rpm, c.ramp_time);
+      return std::make_unique<RotationMotion>(c.axis_point, c.axis, c.rpm, c.ramp_time, c.schedule);
     });
     r.add("planetary", [](const MotionConfig& c) {
       return std::make_unique<PlanetaryMotion>(c.axis_point, c.centre, c.axis, c.rpm,

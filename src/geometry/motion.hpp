@@ -5,6 +5,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -26,6 +27,12 @@ struct RigidPose {
   Vec3 velocity_at(const Vec3& x) const { return velocity + angular_velocity.cross(x - origin); }
 };
 
+// A change of a rotation's speed: from `time` on it turns at `rpm`, reached over the ramp time.
+struct SpeedChange {
+  double time = 0.0;  // [s]
+  double rpm = 0.0;
+};
+
 // The settings of every motion kind, as read from a case file's `motion:` map.
 struct MotionConfig {
   std::string type = "fixed";      // fixed | rotation | planetary | translation | sliding
@@ -35,8 +42,9 @@ struct MotionConfig {
   Vec3 centre = Vec3::Zero();      // planetary: a point of the revolution (vessel) axis
   double revolution_rpm = 0.0;     // planetary: N_G about the revolution axis
   double ramp_time = 0.0;          // smooth start-up over this time [s]; 0: none
-  Vec3 velocity = Vec3::Zero();    // translation, sliding: the constant velocity [m/s]
-  double start = 0.0;              // translation: moves from this time [s]
+  std::vector<SpeedChange> schedule;  // rotation: later speeds, at increasing times after 0
+  Vec3 velocity = Vec3::Zero();       // translation, sliding: the constant velocity [m/s]
+  double start = 0.0;                 // translation: moves from this time [s]
   double stop = std::numeric_limits<double>::infinity();  // translation: until this time [s]
 };
 

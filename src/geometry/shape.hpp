@@ -9,6 +9,7 @@
 
 #include "core/vec.hpp"
 #include "geometry/face.hpp"
+#include "geometry/stl_reader.hpp"
 #include "geometry/surface.hpp"
 
 namespace partimix::geometry {
@@ -28,6 +29,9 @@ class Shape {
   // open. Shapes that are always one or the other (plane, drum, cone, mesh) ignore both.
   virtual std::unique_ptr<Surface> make_surface(bool solid,
                                                 const std::vector<Face>& open_faces) const = 0;
+  // The triangles of a shape generated as a mesh (a truck drum), for the `stl` command; none for
+  // the others.
+  virtual TriangleSoup triangles() const { return {}; }
 };
 
 // Axis-aligned box [lo, hi]. Its surface: a container with open faces

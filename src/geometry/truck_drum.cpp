@@ -87,21 +87,27 @@ double TruckDrumGeometry::shell_distance(const Vec3& x) const {
   return inside ? -d : d;
 }
 
-// The nearer blade of the point's segment as a box across, along and out of its sheet
-// (docs/truck-drum.md, "The blade's signed distance").
-double TruckDrumGeometry::blade_distance(const Vec3& x) const {
+// The nearer blade of segment s as a box across, along and out of its sheet (docs/truck-drum.md,
+// "The blade's signed distance"); past the segment's ends, from its end section.
+double TruckDrumGeometry::segment_blade_distance(int s, const Vec3& x) const {
   const double z = x.z();
-  const int s = segment(std::clamp(z, 0.0, length()));
+  const double section = std::clamp(z, starts_[s], starts_[s + 1]);
   const double rho = std::hypot(x.x(), x.y());
-  const double pi = std::numbers::pi;
-  const double offset = std::remainder(std::atan2(x.y(), x.x()) - blade_angle(s, z), pi);
-  const double twist = rho * blade_twist(s, z);
+  const double offset =
+      std::remainder(std::atan2(x.y(), x.x()) - blade_angle(s, section), std::numbers::pi);
+  const double twist = rho * blade_twist(s, section);
   const double across =
       std::abs(rho * offset / std::sqrt(1.0 + twist * twist)) - 0.5 * p_.blade_thickness;
-  const double inward = radius_at(z) - p_.blade_height - rho;
+  const double inward = radius_at(section) - p_.blade_height - rho;
   const double ends = std::max(starts_[s] - z, z - starts_[s + 1]);
   const Vec3 outside(std::max(across, 0.0), std::max(inward, 0.0), std::max(ends, 0.0));
   return outside.norm() + std::min(std::max({across, inward, ends}), 0.0);
+}
+
+// The nearest of all six blades: near a segment's end the next segment's blade may be nearer.
+double TruckDrumGeometry::blade_distance(const Vec3& x) const {
+  return std::min(
+      {segment_blade_distance(0, x), segment_blade_distance(1, x), segment_blade_distance(2, x)});
 }
 
 double TruckDrumGeometry::signed_distance(const Vec3& x) const {

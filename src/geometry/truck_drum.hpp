@@ -47,10 +47,12 @@ class TruckDrumGeometry {
 
   // x in the drum's frame.
   double shell_distance(const Vec3& x) const;
-  double blade_distance(const Vec3& x) const;
+  double blade_distance(const Vec3& x) const;  // of the nearest of the six blades
   double signed_distance(const Vec3& x) const;
 
  private:
+  double segment_blade_distance(int s, const Vec3& x) const;
+
   TruckDrumParameters p_;
   std::array<double, 4> starts_{};  // z_s of the segments, and L
   std::array<double, 3> slopes_{};  // tan α_s

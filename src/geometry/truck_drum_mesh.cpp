@@ -4,9 +4,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <fstream>
 #include <numbers>
-#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace partimix::geometry {
@@ -36,12 +35,12 @@ void add_twisted_quad(TriangleSoup& out, const Vec3& a, const Vec3& b, const Vec
 // The blade's cross-section at z: inner and outer edge, each side of the sheet, the angular
 // half-width at radius ρ being (t / 2) sqrt(1 + (ρ θ')²) / ρ (docs/truck-drum.md, "The blade's
 // signed distance").
-std::array<Vec3, 4> blade_section(const TruckDrumGeometry& drum, int segment, double turn,
-                                  double z) {
+std::array<Vec3, 4> blade_section(const TruckDrumGeometry& drum, int segment, double turn, double z,
+                                  double root_depth) {
   const TruckDrumParameters& p = drum.parameters();
   const double theta = drum.blade_angle(segment, z) + turn;
-  const double outer = drum.radius_at(z);
-  const double inner = outer - p.blade_height;
+  const double outer = drum.radius_at(z) + root_depth;
+  const double inner = drum.radius_at(z) - p.blade_height;
   const auto half_width = [&](double rho) {
     const double twist = rho * drum.blade_twist(segment, z);
     return 0.5 * p.blade_thickness * std::sqrt(1.0 + twist * twist) / rho;
@@ -50,14 +49,14 @@ std::array<Vec3, 4> blade_section(const TruckDrumGeometry& drum, int segment, do
           polar(z, theta + half_width(outer), outer), polar(z, theta + half_width(inner), inner)};
 }
 
-void put_float(std::ofstream& out, double value) {
+void put_float(std::ostream& out, double value) {
   const auto f = static_cast<float>(value);
   out.write(reinterpret_cast<const char*>(&f), sizeof f);
 }
 
 }  // namespace
 
-TriangleSoup truck_drum_shell_mesh(const TruckDrumGeometry& drum, int divisions) {
+TriangleSoup truck_drum_shell_mesh(const TruckDrumGeometry& drum, int divisions, Opening opening) {
   divisions = std::max(divisions, 3);
   const TruckDrumParameters& p = drum.parameters();
   const std::array<double, 4> z{0.0, drum.segment_start(1), drum.segment_start(2), drum.length()};
@@ -68,20 +67,21 @@ TriangleSoup truck_drum_shell_mesh(const TruckDrumGeometry& drum, int divisions)
       rings[k].push_back(polar(z[k], 2.0 * std::numbers::pi * j / divisions, r[k]));
   TriangleSoup out;
   const Vec3 head(0.0, 0.0, 0.0);
-  const Vec3 opening(0.0, 0.0, drum.length());
+  const Vec3 end(0.0, 0.0, drum.length());
   for (int j = 0; j < divisions; ++j) {
     const auto next = static_cast<std::size_t>((j + 1) % divisions);
     const auto here = static_cast<std::size_t>(j);
     out.push_back({{head, rings[0][next], rings[0][here]}});
     for (std::size_t k = 0; k < 3; ++k)
       add_quad(out, rings[k][here], rings[k][next], rings[k + 1][next], rings[k + 1][here]);
-    out.push_back({{opening, rings[3][here], rings[3][next]}});
+    if (opening == Opening::closed)
+      out.push_back({{end, rings[3][here], rings[3][next]}});
   }
   return out;
 }
 
 TriangleSoup truck_drum_blade_mesh(const TruckDrumGeometry& drum, int segment, int blade,
-                                   int divisions) {
+                                   int divisions, double root_depth) {
   const double start = drum.segment_start(segment);
   const double end = drum.segment_start(segment + 1);
   const double turned = std::abs(drum.blade_angle(segment, end) - drum.blade_angle(segment, start));
@@ -95,7 +95,7 @@ TriangleSoup truck_drum_blade_mesh(const TruckDrumGeometry& drum, int segment, i
   std::vector<std::array<Vec3, 4>> sections;
   for (int i = 0; i < stations; ++i)
     sections.push_back(
-        blade_section(drum, segment, turn, start + (end - start) * i / (stations - 1)));
+        blade_section(drum, segment, turn, start + (end - start) * i / (stations - 1), root_depth));
   TriangleSoup out;
   for (std::size_t i = 0; i + 1 < sections.size(); ++i)
     for (std::size_t k = 0; k < 4; ++k) {
@@ -109,8 +109,18 @@ TriangleSoup truck_drum_blade_mesh(const TruckDrumGeometry& drum, int segment, i
   return out;
 }
 
-void write_stl(const std::string& path, const TriangleSoup& triangles) {
-  std::ofstream out(path, std::ios::binary);
+TriangleSoup truck_drum_surface_mesh(const TruckDrumGeometry& drum, int divisions) {
+  TriangleSoup out = truck_drum_shell_mesh(drum, divisions, Opening::open);
+  const double root_depth = drum.parameters().blade_thickness;
+  for (int segment = 0; segment < 3; ++segment)
+    for (int blade = 0; blade < 2; ++blade) {
+      const TriangleSoup strip = truck_drum_blade_mesh(drum, segment, blade, divisions, root_depth);
+      out.insert(out.end(), strip.begin(), strip.end());
+    }
+  return out;
+}
+
+void write_stl(std::ostream& out, const TriangleSoup& triangles) {
   std::array<char, 80> header{};
   const std::string title = "partimix truck drum";
   std::copy(title.begin(), title.end(), header.begin());
@@ -127,8 +137,6 @@ void write_stl(const std::string& path, const TriangleSoup& triangles) {
     const std::uint16_t attribute = 0;
     out.write(reinterpret_cast<const char*>(&attribute), sizeof attribute);
   }
-  if (!out)
-    throw std::runtime_error("cannot write the STL file " + path);
 }
 
 }  // namespace partimix::geometry

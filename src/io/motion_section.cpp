@@ -27,6 +27,21 @@ void read_translation(Reader& section, geometry::MotionConfig& motion, int dimen
   }
 }
 
+// rotation: later speeds, each {time, rpm} at a time after the one before (and after 0).
+void read_schedule(Reader& section, geometry::MotionConfig& motion) {
+  double previous = 0.0;
+  for (Reader& item : section.optional_list("schedule")) {
+    geometry::SpeedChange change;
+    change.time = item.required<double>("time", kPositive);
+    if (!(change.time > previous))
+      throw item.error("time", "the schedule's times must increase");
+    change.rpm = item.required<double>("rpm");
+    item.done();
+    motion.schedule.push_back(change);
+    previous = change.time;
+  }
+}
+
 }  // namespace
 
 geometry::MotionConfig read_motion(Reader& item, int dimensions) {
@@ -40,6 +55,8 @@ geometry::MotionConfig read_motion(Reader& item, int dimensions) {
     motion.rpm = section.required<double>("rpm");
     motion.ramp_time = section.optional<double>("ramp_time", 0.0, kNonNegative);
   }
+  if (motion.type == "rotation")
+    read_schedule(section, motion);
   if (motion.type == "planetary") {
     motion.centre = section.vector("centre", dimensions, Vec3::Zero());
     motion.revolution_rpm = section.required<double>("revolution_rpm");

@@ -12,6 +12,7 @@
 #include "geometry/plane.hpp"
 #include "geometry/triangle_check.hpp"
 #include "geometry/triangle_mesh.hpp"
+#include "io/truck_drum_section.hpp"
 
 namespace partimix::io {
 namespace {
@@ -176,6 +177,8 @@ ShapePtr read_shape_of(const std::string& shape, Reader& item, int dimensions,
     return read_drum(item, dimensions);
   if (shape == "cone")
     return read_cone(item, dimensions);
+  if (shape == "truck_drum")
+    return read_truck_drum(item, dimensions);
   return read_box(item, dimensions);
 }
 

@@ -12,12 +12,13 @@
 namespace partimix::io {
 namespace {
 
-const std::vector<std::string> kShapes{"box", "cylinder", "plate", "mesh", "plane", "drum", "cone"};
+const std::vector<std::string> kShapes{"box",   "cylinder", "plate", "mesh",
+                                       "plane", "drum",     "cone",  "truck_drum"};
 
 // Shapes that are one kind of wall only: a plane keeps the material on its normal's side, a drum
-// and a cone hold it inside with their ends open.
+// and a cone hold it inside with their ends open, a truck drum inside with its opening open.
 bool has_fixed_side(const std::string& kind) {
-  return kind == "plane" || kind == "drum" || kind == "cone";
+  return kind == "plane" || kind == "drum" || kind == "cone" || kind == "truck_drum";
 }
 
 std::vector<std::string> face_names(int dimensions) {

@@ -121,5 +121,35 @@ TEST(Motion, StartUpRampStartsAtRestAndReachesFullSpeedSmoothly) {
   EXPECT_LT((motion->pose(0.9).place(start) - expected).norm(), 1e-12);
 }
 
+// A truck drum's schedule: 14 rpm from rest over 2 s, back to -8 rpm at 60 s. The speed is
+// continuous and the angle is its integral: against the trapezoidal sum of the speeds at 1e-4 s
+// (error below 1e-9 rad; tolerance 1e-6 rad for the round-off of 7e5 terms), and after the last
+// ramp against the closed form: each step Δω_k adds Δω_k (t - t_k - T/2).
+TEST(Motion, ScheduledSpeedChangesRampAndTheAngleIsTheSpeedsIntegral) {
+  MotionConfig config;
+  config.type = "rotation";
+  config.rpm = 14.0;
+  config.ramp_time = 2.0;
+  config.schedule = {{60.0, -8.0}};
+  const auto motion = make(config);
+  const double w1 = 14.0 * 2.0 * kPi / 60.0;
+  const double w2 = -8.0 * 2.0 * kPi / 60.0;
+  EXPECT_NEAR(motion->pose(30.0).angular_velocity.z(), w1, 1e-12);
+  EXPECT_NEAR(motion->pose(61.0).angular_velocity.z(), 0.5 * (w1 + w2), 1e-12);
+  EXPECT_NEAR(motion->pose(70.0).angular_velocity.z(), w2, 1e-12);
+  double angle = 0.0;
+  const double h = 1e-4;
+  for (double t = 0.0; t < 70.0 - 0.5 * h; t += h)
+    angle +=
+        0.5 * h * (motion->pose(t).angular_velocity.z() + motion->pose(t + h).angular_velocity.z());
+  const double closed_form = w1 * (70.0 - 1.0) + (w2 - w1) * (70.0 - 60.0 - 1.0);
+  EXPECT_NEAR(angle, closed_form, 1e-6);
+  const Vec3 start(1.0, 0.0, 0.0);
+  const Vec3 expected(std::cos(closed_form), std::sin(closed_form), 0.0);
+  EXPECT_LT((motion->pose(70.0).place(start) - expected).norm(), 1e-12);
+  for (double t : {1.0, 59.5, 60.5, 61.9, 65.0})
+    expect_velocity_matches_positions(*motion, start, t);
+}
+
 }  // namespace
 }  // namespace partimix::geometry

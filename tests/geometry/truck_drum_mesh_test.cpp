@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <numbers>
 
 #include "eight_cubic_metre_drum.hpp"
@@ -78,7 +79,11 @@ TEST(TruckDrumMesh, AnStlWrittenReadsBackTheSameTriangles) {
   const test_support::TempDir dir;
   const TriangleSoup soup = truck_drum_blade_mesh(drum(), 1, 0, kDivisions);
   const std::string path = (dir / "blade.stl").string();
-  write_stl(path, soup);
+  {
+    std::ofstream out(path, std::ios::binary);
+    write_stl(out, soup);
+    ASSERT_TRUE(out.good());
+  }
   const TriangleSoup back = read_stl(path);
   ASSERT_EQ(back.size(), soup.size());
   double largest = 0.0;
@@ -86,7 +91,6 @@ TEST(TruckDrumMesh, AnStlWrittenReadsBackTheSameTriangles) {
     for (int c = 0; c < 3; ++c)
       largest = std::max(largest, (back[i].corner[c] - soup[i].corner[c]).norm());
   EXPECT_LT(largest, 1e-6);
-  EXPECT_THROW(write_stl((dir / "no" / "such" / "folder.stl").string(), soup), std::runtime_error);
 }
 
 }  // namespace
