@@ -8,7 +8,7 @@ packages=(
   libeigen3-dev libyaml-cpp-dev libcli11-dev libfmt-dev libspdlog-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-matplotlib python3-numpy python3-scipy
-  clang-format nlohmann-json3-dev libhdf5-dev
+  clang-format nlohmann-json3-dev libhdf5-dev libnlopt-dev
   # `make fuzz`: clang with libFuzzer and the sanitizer runtimes (libclang_rt.fuzzer is in
   # libclang-rt-14-dev, only recommended by clang), and clang's OpenMP
   clang libclang-rt-14-dev libomp-14-dev

@@ -1,6 +1,8 @@
 #include "analysis/analysis.hpp"
 #include "analysis/angle_of_repose.hpp"
 #include "analysis/body_loads.hpp"
+#include "analysis/drum_discharge.hpp"
+#include "analysis/drum_segregation.hpp"
 #include "analysis/front_position.hpp"
 #include "analysis/height_profile.hpp"
 #include "analysis/mass_flux.hpp"
@@ -36,6 +38,12 @@ const Registry<Analysis, const AnalysisOptions&>& analysis_registry() {
           [](const AnalysisOptions& o) { return std::make_unique<HeightProfile>(o.height); });
     r.add("orientation_order", [](const AnalysisOptions& o) {
       return std::make_unique<OrientationOrder>(o.orientation);
+    });
+    r.add("drum_segregation", [](const AnalysisOptions& o) {
+      return std::make_unique<DrumSegregation>(o.drum_measures);
+    });
+    r.add("drum_discharge", [](const AnalysisOptions& o) {
+      return std::make_unique<DrumDischarge>(o.drum_measures);
     });
     return r;
   }();

@@ -2,10 +2,9 @@
 
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <stdexcept>
 
-#include "core/error.hpp"
+#include "analysis/grain_volumes.hpp"
 
 namespace partimix::analysis {
 
@@ -20,33 +19,18 @@ PackingFraction::PackingFraction(const PackingBox& box)
   measure_ = flat_ ? size.x() * size.y() : size.x() * size.y() * size.z();
 }
 
-// The solid volume (area when flat) of the material particles whose centre lies in the box:
-// each particle's `volume` when the particles carry it (superquadric grains), else the ball (in
-// 2D the disc) of its `radius`.
+// The solid volume (area when flat) of the material particles whose centre lies in the box.
 double PackingFraction::solid_in_box(const ParticleStore& particles) const {
-  const Field<double>* volume = flat_ ? nullptr : particles.find_scalar("volume");
-  const Field<double>* radius = particles.find_scalar("radius");
-  if (radius == nullptr && volume == nullptr) {
-    throw RunError(
-        "the analysis packing_fraction needs the particle field 'radius' (DEM grains); these "
-        "particles have none");
-  }
-  double volumes = 0.0;
-  double balls = 0.0;  // sum of (4/3) R^3 (R^2 when flat), times pi at the end
+  const GrainVolumes volume(particles, "packing_fraction", flat_);
+  double solid = 0.0;
   for (std::size_t i = 0; i < particles.size(); ++i) {
     const Vec3& x = particles.position()[i];
     const bool inside =
         (x.array() >= box_.lo.array()).all() && (x.array() <= box_.hi.array()).all();
-    if (!particles.is_material(i) || !inside)
-      continue;
-    if (volume != nullptr) {
-      volumes += volume->values[i];
-      continue;
-    }
-    const double r = radius->values[i];
-    balls += flat_ ? r * r : r * r * r * (4.0 / 3.0);
+    if (particles.is_material(i) && inside)
+      solid += volume(i);
   }
-  return std::numbers::pi * balls + volumes;
+  return solid;
 }
 
 void PackingFraction::sample(const ParticleStore& particles, double /*time*/,

@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.hpp"
+#include "app/optimise.hpp"
 #include "app/sweep.hpp"
 #include "core/error.hpp"
 
@@ -50,6 +51,25 @@ int main(int argc, char** argv) {
   CLI::App* plot_cmd = cli.add_subcommand("plot", "Plot series.csv of an output folder to PNG");
   plot_cmd->add_option("outdir", plot_dir, "Output folder of a run")->required();
 
+  app::OptimiseArguments optimise;
+  CLI::App* optimise_cmd = cli.add_subcommand(
+      "optimise", "Search case keys within bounds for the design that minimises a figure");
+  optimise_cmd->add_option("case", optimise.case_file, "Case file (YAML)")->required();
+  optimise_cmd->add_option("--vary", optimise.varied, "A key and its bounds: key.path=lo:hi")
+      ->required();
+  optimise_cmd->add_option("--minimise", optimise.figure, "The run.json figure to minimise")
+      ->required();
+  optimise_cmd->add_option("--target", optimise.target, "Stop once the figure is at or below it");
+  optimise_cmd->add_option("--algorithm", optimise.algorithm,
+                           "bobyqa (default), cobyla or neldermead (NLopt)");
+  optimise_cmd->add_option("--evaluations", optimise.evaluations, "Most runs (default: 20)")
+      ->check(CLI::Range(1, 10000));
+  optimise_cmd->add_option("--set,-s", optimise.overrides, "Override a case key in every run");
+  optimise_cmd->add_option("--out,-o", optimise.output_dir,
+                           "Search folder (default: out/<name>_optimise); again to resume");
+  optimise_cmd->add_option("--threads,-t", optimise.threads, "Threads per run (default: all)")
+      ->check(CLI::Range(1, 4096));
+
   std::string stl_file;
   std::vector<std::string> stl_overrides;
   std::string stl_dir = ".";
@@ -71,6 +91,8 @@ int main(int argc, char** argv) {
     return app::check_command(check_file, check_overrides);
   if (sweep_cmd->parsed())
     return app::sweep_command(sweep);
+  if (optimise_cmd->parsed())
+    return app::optimise_command(optimise);
   if (stl_cmd->parsed())
     return app::stl_command(stl_file, stl_overrides, stl_dir);
   return app::plot_command(plot_dir);

@@ -33,8 +33,9 @@ class TruckDrumShape final : public Shape {
                                         const std::vector<Face>& open_faces) const override;
   TriangleSoup triangles() const override { return triangles_; }
 
-  // x of the case in the drum's own frame.
+  // x of the case in the drum's own frame, and back.
   Vec3 to_drum(const Vec3& x) const { return rotation_.transpose() * (x - axis_point_); }
+  Vec3 from_drum(const Vec3& local) const { return axis_point_ + rotation_ * local; }
   const TruckDrumGeometry& drum() const { return drum_; }
 
  private:

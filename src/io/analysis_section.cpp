@@ -12,14 +12,15 @@
 
 #include "analysis/power_number.hpp"
 #include "io/axis_names.hpp"
+#include "io/drum_measures_section.hpp"
 
 namespace partimix::io {
 namespace {
 
-const std::vector<std::string> kTypes{"front_position",  "body_loads",       "power_number",
-                                      "mixing",          "packing_fraction", "velocity_profile",
-                                      "angle_of_repose", "mass_in_region",   "height_profile",
-                                      "mass_flux",       "orientation_order"};
+const std::vector<std::string> kTypes{
+    "front_position",    "body_loads",       "power_number",   "mixing",         "packing_fraction",
+    "velocity_profile",  "angle_of_repose",  "mass_in_region", "height_profile", "mass_flux",
+    "orientation_order", "drum_segregation", "drum_discharge"};
 
 constexpr int kMostBins = 1000;  // of a profile: one series.csv column each
 
@@ -361,6 +362,8 @@ void read_type_keys(Reader& item, AnalysisSpec& analysis, const Case& the_case,
     read_height_profile(item, analysis, dimensions);
   if (analysis.type == "orientation_order")
     read_orientation_order(item, analysis, dimensions, section);
+  if (analysis.type == "drum_segregation" || analysis.type == "drum_discharge")
+    read_drum_measures(item, analysis, the_case);
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/bed_options.hpp"
+#include "analysis/drum_measures.hpp"
 #include "analysis/sampling_cells.hpp"
 #include "core/error.hpp"
 #include "core/vec.hpp"
@@ -101,6 +102,7 @@ struct AnalysisSpec {
   analysis::FluxPlane flux;                    // mass_flux
   analysis::HeightLine height;                 // height_profile
   analysis::OrientationReference orientation;  // orientation_order
+  analysis::DrumMeasures drum_measures;        // drum_segregation, drum_discharge
 };
 
 // What a method read from its own sections of the case file. Each method derives its own type;

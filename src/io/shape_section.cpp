@@ -159,7 +159,8 @@ MeshItem read_mesh_item(Reader& item, int dimensions, const std::filesystem::pat
 }
 
 ShapePtr read_shape(Reader& item, int dimensions, const std::filesystem::path& case_folder) {
-  const std::string shape = item.required_choice("shape", {"box", "cylinder", "plate", "mesh"});
+  const std::string shape =
+      item.required_choice("shape", {"box", "cylinder", "plate", "mesh", "truck_drum"});
   return read_shape_of(shape, item, dimensions, case_folder);
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // The shapes of a case file (docs/case-reference.md, "Shapes"): the items of the regions
-// (`fluid.regions`, `dem.fill.region`: box, cylinder, plate, mesh) and of `walls` (those and
-// plane, drum, cone), chosen by `shape`, each read with its own keys.
+// (`fluid.regions`, `dem.fill.region`: box, cylinder, plate, mesh, truck_drum: its cavity) and of
+// `walls` (those and plane, drum, cone), chosen by `shape`, each read with its own keys.
 #include <filesystem>
 #include <memory>
 #include <string>

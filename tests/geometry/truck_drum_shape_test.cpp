@@ -29,16 +29,13 @@ const TruckDrumShape& shape() {
 
 // A point of the case at (z, θ, ρ) of the drum's own frame.
 Vec3 from_drum(double z, double theta, double rho) {
-  const Vec3 local(rho * std::cos(theta), rho * std::sin(theta), z);
-  // The inverse of to_drum (x -> Rᵀ (x - head)): x_b = head_b + local . (Rᵀ e_b).
-  Vec3 x = kHead;
-  for (int b = 0; b < 3; ++b)
-    x[b] += local.dot(shape().to_drum(kHead + Vec3::Unit(b)));
-  return x;
+  return shape().from_drum(Vec3(rho * std::cos(theta), rho * std::sin(theta), z));
 }
 
 TEST(TruckDrumShape, ItsFrameIsARotationThatTakesTheAxisToZ) {
   const double length = shape().drum().length();
+  const Vec3 local(0.3, -0.2, 1.1);
+  EXPECT_LT((shape().to_drum(shape().from_drum(local)) - local).norm(), 1e-15);
   EXPECT_LT(shape().to_drum(kHead).norm(), 1e-12);
   EXPECT_LT((shape().to_drum(kHead + length * kAxis) - Vec3(0.0, 0.0, length)).norm(), 1e-12);
   std::mt19937 random(7);

@@ -77,6 +77,32 @@ TEST(CaseTruckDrum, BadValuesAreLocated) {
   EXPECT_EQ(key_of_error(back_in_time), "walls[0].motion.schedule[1].time");
 }
 
+TEST(CaseTruckDrum, ItsAnalysesLoadAndNeedADrumTurningAboutItsAxis) {
+  const std::string analyses = R"(analyses:
+  - {type: drum_segregation, wall: 0, coarse_species: 0, bins: 8, threshold: 4, mixing_until: 5}
+  - {type: drum_discharge, wall: 0, fit_from: 8, fit_until: 12}
+)";
+  const io::Case loaded = load_text(kDemHead + kSchedule + analyses);
+  ASSERT_EQ(loaded.analyses.size(), 2u);
+  EXPECT_EQ(loaded.analyses[0].drum_measures.bins, 8);
+  EXPECT_DOUBLE_EQ(loaded.analyses[0].drum_measures.mixing_until, 5.0);
+  EXPECT_DOUBLE_EQ(loaded.analyses[1].drum_measures.fit_until, 12.0);
+  EXPECT_EQ(loaded.analyses[1].drum_measures.drum.get(), loaded.walls[0].shape.get());
+  const std::string off_axis =
+      R"(    motion: {type: rotation, axis_point: [-0.1, 0.01, 0], axis: [1, 0, 0.2], rpm: 14}
+)";
+  EXPECT_EQ(key_of_error(kDemHead + off_axis + analyses), "analyses[0].wall");
+  const std::string plane = "  - {shape: plane, point: [0, 0, -0.15], normal: [0, 0, 1]}\n";
+  EXPECT_EQ(key_of_error(kDemHead + plane +
+                         replace_line(analyses, 2, "  - {type: drum_segregation, wall: 1}")),
+            "analyses[0].wall");
+  EXPECT_EQ(
+      key_of_error(kDemHead +
+                   replace_line(analyses, 3,
+                                "  - {type: drum_discharge, wall: 0, fit_from: 8, fit_until: 8}")),
+      "analyses[1].fit_until");
+}
+
 TEST(CaseTruckDrum, NeedsThreeDimensions) {
   const InputError error = load_error(CaseFile(kMinimal2D + R"(walls:
   - {shape: truck_drum, axis_point: [0, 0], axis: [1, 0]}

@@ -1,0 +1,26 @@
+#include "analysis/grain_volumes.hpp"
+
+#include <numbers>
+
+#include "core/error.hpp"
+
+namespace partimix::analysis {
+
+GrainVolumes::GrainVolumes(const ParticleStore& particles, const std::string& analysis, bool flat)
+    : volume_(flat ? nullptr : particles.find_scalar("volume")),
+      radius_(particles.find_scalar("radius")),
+      flat_(flat) {
+  if (radius_ == nullptr && volume_ == nullptr) {
+    throw RunError("the analysis " + analysis +
+                   " needs the particle field 'radius' (DEM grains); these particles have none");
+  }
+}
+
+double GrainVolumes::operator()(std::size_t i) const {
+  if (volume_ != nullptr)
+    return volume_->values[i];
+  const double r = radius_->values[i];
+  return flat_ ? std::numbers::pi * r * r : (4.0 / 3.0) * std::numbers::pi * r * r * r;
+}
+
+}  // namespace partimix::analysis

@@ -1,0 +1,169 @@
+// The truck drum's measurements (docs/truck-drum.md, "Measurements") on hand-placed grains in a
+// tilted drum: the segregation degree of slices whose coarse shares alternate 0.4 and 0.6 is
+// 100 sd / mean = 20% (1e-9), a uniform mixture's is 0 with empty slices left out, the summary
+// takes the last sample before mixing_until and survives a replay; the discharge of two grains a
+// second gives the rate 120 V_g m³/min and the flow column exactly, the residual rate 10% for 2
+// of 20 grains left, and the uniformity test's difference 100 |a - b| / ((a + b) / 2) of the
+// stream's coarse shares at a quarter (a = 1/2) and three quarters (b = 1) of the discharge.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <vector>
+
+#include "analysis/drum_discharge.hpp"
+#include "analysis/drum_segregation.hpp"
+#include "load_fixtures.hpp"
+
+namespace partimix::analysis {
+namespace {
+
+using analysis_test::add_particle;
+using analysis_test::sample_once;
+
+constexpr double kRadius = 0.002;
+const Vec3 kHead(0.1, -0.2, 0.3);
+
+std::shared_ptr<const geometry::TruckDrumShape> drum() {
+  geometry::TruckDrumParameters p;
+  p.head_radius = 0.05;
+  p.front_length = 0.05;
+  p.radius = 0.08;
+  p.cylinder_length = 0.1;
+  p.rear_length = 0.05;
+  p.opening_radius = 0.03;
+  p.helix_angle = 70.0 * std::numbers::pi / 180.0;
+  p.blade_height = 0.02;
+  p.blade_thickness = 0.004;
+  p.offset_angles = {0.0, 0.0, 0.0};
+  static const auto shape =
+      std::make_shared<const geometry::TruckDrumShape>(p, kHead, Vec3(1.0, 0.0, 0.2), 24);
+  return shape;
+}
+
+// The case's point at (z, θ, ρ) of the drum's frame.
+Vec3 at(double z, double theta, double rho) {
+  return drum()->from_drum(Vec3(rho * std::cos(theta), rho * std::sin(theta), z));
+}
+
+struct Grains {
+  ParticleStore store;
+  Field<double>* radius = &store.add_scalar("radius", "m");
+  Field<std::int32_t>* species = &store.add_integer("species", "");
+
+  void add(const Vec3& x, int kind) {
+    const std::size_t i = add_particle(store, ParticleKind::grain, x);
+    radius->values[i] = kRadius;
+    species->values[i] = kind;
+  }
+};
+
+DrumMeasures options() {
+  DrumMeasures o;
+  o.drum = drum();
+  o.bins = 10;
+  o.coarse_species = 1;
+  return o;
+}
+
+// Ten grains in each of the first `slices` of ten slices, `coarse(k)` of them coarse.
+template <class Coarse>
+void fill_slices(Grains& grains, int slices, Coarse coarse) {
+  const double length = drum()->drum().length();
+  for (int k = 0; k < slices; ++k)
+    for (int g = 0; g < 10; ++g)
+      grains.add(at((k + 0.5) * length / 10, 0.6 * g, 0.01), g < coarse(k) ? 1 : 0);
+}
+
+TEST(DrumSegregation, AlternatingSharesGiveTheirCoefficientOfVariation) {
+  Grains grains;
+  fill_slices(grains, 10, [](int k) { return k % 2 == 0 ? 4 : 6; });
+  grains.add(at(drum()->drum().length() + 0.05, 0.0, 0.0), 1);  // discharged: not counted
+  DrumSegregation segregation(options());
+  const std::vector<double> values = sample_once(segregation, grains.store, 0.0);
+  EXPECT_NEAR(values[0], 20.0, 1e-9);
+  EXPECT_NEAR(values[1], 0.5, 1e-12);
+}
+
+TEST(DrumSegregation, AUniformMixtureIsZeroAndEmptySlicesAreLeftOut) {
+  Grains grains;
+  fill_slices(grains, 9, [](int) { return 3; });
+  DrumSegregation segregation(options());
+  EXPECT_NEAR(sample_once(segregation, grains.store, 0.0)[0], 0.0, 1e-9);
+  Figures figures;
+  segregation.add_figures(figures);
+  EXPECT_EQ(figures.at("segregation_within_threshold"), 1.0);
+}
+
+TEST(DrumSegregation, TheSummaryIsTheLastSampleBeforeMixingUntilAndSurvivesAReplay) {
+  Grains segregated;
+  fill_slices(segregated, 10, [](int k) { return k % 2 == 0 ? 4 : 6; });
+  Grains uniform;
+  fill_slices(uniform, 10, [](int) { return 5; });
+  DrumMeasures o = options();
+  o.mixing_until = 1.5;
+  DrumSegregation segregation(o);
+  const std::vector<double> first = sample_once(segregation, segregated.store, 1.0);
+  const std::vector<double> second = sample_once(segregation, uniform.store, 2.0);
+  Figures figures;
+  segregation.add_figures(figures);
+  EXPECT_NEAR(figures.at("segregation_degree"), 20.0, 1e-9);
+  EXPECT_EQ(figures.at("segregation_within_threshold"), 0.0);
+  DrumSegregation replayed(o);
+  replayed.replay(1.0, first);
+  replayed.replay(2.0, second);
+  Figures again;
+  replayed.add_figures(again);
+  EXPECT_EQ(again.values(), figures.values());
+}
+
+TEST(DrumDischarge, RateResidualAndUniformityOfATwoGrainsASecondDischarge) {
+  const double length = drum()->drum().length();
+  const double grain = 4.0 / 3.0 * std::numbers::pi * std::pow(kRadius, 3);
+  Grains grains;
+  for (int g = 0; g < 20; ++g)
+    grains.add(at(0.02 + 0.008 * g, 0.3 * g, 0.01), 0);
+  // Grains 2 and 3 leave at t = 2 (a quarter of the 18 discharged), 12 and 13 at t = 7.
+  for (int g : {2, 12, 13})
+    grains.species->values[g] = 1;
+  DrumMeasures o = options();
+  DrumDischarge discharge(o);
+  std::vector<std::vector<double>> rows;
+  for (int t = 0; t <= 9; ++t) {
+    for (int g = 0; g < 2 * t; ++g) {
+      const bool just_out = g >= 2 * t - 2;
+      grains.store.position()[g] = at(length + (just_out ? 0.01 : 1.0), 0.0, 0.0);
+    }
+    rows.push_back(sample_once(discharge, grains.store, t));
+    EXPECT_NEAR(rows.back()[1], 2 * t * grain, 1e-18) << t;
+    EXPECT_NEAR(rows.back()[2], t == 0 ? 0.0 : 120.0 * grain, 1e-15) << t;
+  }
+  EXPECT_NEAR(rows[2][4], 0.5, 1e-12);
+  Figures figures;
+  discharge.add_figures(figures);
+  EXPECT_NEAR(figures.at("residual_rate"), 10.0, 1e-9);
+  EXPECT_NEAR(figures.at("discharge_rate"), 120.0 * grain, 1e-12 * grain);
+  EXPECT_NEAR(figures.at("coarse_aggregate_difference"), 100.0 * 0.5 / 0.75, 1e-9);
+  Caveats caveats;
+  discharge.add_caveats(caveats);
+  EXPECT_TRUE(caveats.empty());
+}
+
+TEST(DrumDischarge, NoStreamSampleIsACaveat) {
+  Grains grains;
+  grains.add(at(0.05, 0.0, 0.01), 1);
+  DrumDischarge discharge(options());
+  for (int t = 0; t < 4; ++t)
+    sample_once(discharge, grains.store, t);
+  Caveats caveats;
+  discharge.add_caveats(caveats);
+  EXPECT_TRUE(caveats.contains("coarse_aggregate_difference"));
+  Figures figures;
+  discharge.add_figures(figures);
+  EXPECT_NEAR(figures.at("residual_rate"), 100.0, 1e-12);
+  EXPECT_FALSE(figures.contains("coarse_aggregate_difference"));
+}
+
+}  // namespace
+}  // namespace partimix::analysis
