@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -90,7 +91,14 @@ TriangleSoup truck_drum_blade_mesh(const TruckDrumGeometry& drum, int segment, i
   const TruckDrumParameters& p = drum.parameters();
   const double step = std::min(2.0 * std::numbers::pi / std::max(divisions, 3),
                                0.5 * p.blade_thickness / p.blade_height);
-  const int stations = std::max(2, static_cast<int>(std::ceil(turned / step)) + 1);
+  const double needed = std::ceil(turned / step) + 1.0;
+  if (!(needed <= kMostBladeStations))
+    throw std::invalid_argument(
+        "the blades turn too far for their thickness against their height (a mesh of more than " +
+        std::to_string(kMostBladeStations) +
+        " stations per blade): thicken them or lower the "
+        "helix angle");
+  const int stations = std::max(2, static_cast<int>(needed));
   const double turn = blade * std::numbers::pi;
   std::vector<std::array<Vec3, 4>> sections;
   for (int i = 0; i < stations; ++i)

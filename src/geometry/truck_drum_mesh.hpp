@@ -20,9 +20,13 @@ enum class Opening { closed, open };
 // `divisions` points around each ring (at least 3).
 TriangleSoup truck_drum_shell_mesh(const TruckDrumGeometry& drum, int divisions,
                                    Opening opening = Opening::closed);
+// The most stations a blade's mesh may have (a bound on the memory and time of a strange input).
+inline constexpr int kMostBladeStations = 200000;
+
 // Blade `blade` (0 or 1, half a turn apart) of segment `segment`, with a station wherever its
 // angle has turned by 2 π / divisions or by t_b / (2 h_b), the smaller (at least 2 stations);
-// each side between stations as four triangles about the quad's centre. The blade reaches from
+// each side between stations as four triangles about the quad's centre; throws
+// std::invalid_argument past kMostBladeStations. The blade reaches from
 // r(z) - h_b to r(z) + root_depth: a root depth above zero sinks its outer face into the wall
 // behind the shell, so that a grain at the shell never meets it.
 TriangleSoup truck_drum_blade_mesh(const TruckDrumGeometry& drum, int segment, int blade,

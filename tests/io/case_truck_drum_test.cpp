@@ -67,6 +67,12 @@ TEST(CaseTruckDrum, BadValuesAreLocated) {
   const InputError wide = load_error(CaseFile(replace_line(kDemHead, 21, "    head_radius: 0.1")));
   EXPECT_EQ(wide.location().key_path, "walls[0].shape");
   EXPECT_THAT(wide.message(), HasSubstr("head_radius must not exceed radius"));
+  const InputError thin = load_error(CaseFile(replace_line(
+      kDemHead, 27,
+      "    blades: {height: 0.02, thickness: 1.0e-12, helix_angle: 89.99999, offset_angles: [0, "
+      "0, 0]}")));
+  EXPECT_EQ(thin.location().key_path, "walls[0].shape");
+  EXPECT_THAT(thin.message(), HasSubstr("turn too far"));
   const std::string back_in_time = kDemHead + R"(    motion:
       type: rotation
       rpm: 14
