@@ -2,6 +2,7 @@
 // The options of the truck drum's measurements (docs/truck-drum.md, "Measurements"):
 // drum_segregation and drum_discharge read the grains' places along the drum's axis and from it,
 // which a rotation about that axis leaves as they are.
+#include <cmath>
 #include <limits>
 #include <memory>
 

@@ -5,7 +5,6 @@
 #include <stdexcept>
 
 #include "analysis/grain_volumes.hpp"
-#include "core/error.hpp"
 
 namespace partimix::analysis {
 namespace {
@@ -52,9 +51,7 @@ DrumSegregation::DrumSegregation(const DrumMeasures& options)
 void DrumSegregation::sample(const ParticleStore& particles, double time,
                              std::span<double> values) {
   const GrainVolumes volume(particles, "drum_segregation");
-  const Field<std::int32_t>* species = particles.find_integer("species");
-  if (species == nullptr)
-    throw RunError("the analysis drum_segregation needs the particle field 'species' (DEM grains)");
+  const Field<std::int32_t>& species = grain_species(particles, "drum_segregation");
   std::fill(coarse_.begin(), coarse_.end(), 0.0);
   std::fill(all_.begin(), all_.end(), 0.0);
   const double length = options_.drum->drum().length();
@@ -67,7 +64,7 @@ void DrumSegregation::sample(const ParticleStore& particles, double time,
       continue;
     const auto k = static_cast<std::size_t>(std::clamp(place.z / length * bins, 0.0, bins - 1.0));
     all_[k] += volume(i);
-    if (species->values[i] == options_.coarse_species)
+    if (species.values[i] == options_.coarse_species)
       coarse_[k] += volume(i);
   }
   double coarse = 0.0;

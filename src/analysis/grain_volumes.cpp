@@ -23,4 +23,12 @@ double GrainVolumes::operator()(std::size_t i) const {
   return flat_ ? std::numbers::pi * r * r : (4.0 / 3.0) * std::numbers::pi * r * r * r;
 }
 
+const Field<std::int32_t>& grain_species(const ParticleStore& particles,
+                                         const std::string& analysis) {
+  const Field<std::int32_t>* species = particles.find_integer("species");
+  if (species == nullptr)
+    throw RunError("the analysis " + analysis + " needs the particle field 'species' (DEM grains)");
+  return *species;
+}
+
 }  // namespace partimix::analysis

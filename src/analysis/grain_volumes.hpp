@@ -1,7 +1,7 @@
 #pragma once
 // The solid volume of each grain (area when flat), for the analyses that weigh grains by it: the
 // grain's `volume` where the particles carry it (superquadrics), else the ball (in 2D the disc)
-// of its `radius`.
+// of its `radius`; and the grains' species.
 #include <cstddef>
 #include <string>
 
@@ -20,5 +20,9 @@ class GrainVolumes {
   const Field<double>* radius_;
   bool flat_;
 };
+
+// The grains' `species` field; throws RunError naming `analysis` when the particles have none.
+const Field<std::int32_t>& grain_species(const ParticleStore& particles,
+                                         const std::string& analysis);
 
 }  // namespace partimix::analysis

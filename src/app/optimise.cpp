@@ -28,6 +28,8 @@ namespace fs = std::filesystem;
 struct Search {
   std::vector<DesignVariable> variables;
   std::vector<double> start;
+  std::vector<double> lower;
+  std::vector<double> upper;
   fs::path dir;
 };
 
@@ -49,15 +51,12 @@ Search plan_search(const OptimiseArguments& arguments) {
     throw InputError({"--algorithm", 0, 0, ""},
                      fmt::format("'{}' is not one of {}", arguments.algorithm, names));
   const io::Case base = io::load_case(arguments.case_file, arguments.overrides);
-  for (const DesignVariable& variable : search.variables)
-    search.start.push_back(start_value(variable, base.resolved));
-  std::vector<double> lower;
-  std::vector<double> upper;
   for (const DesignVariable& variable : search.variables) {
-    lower.push_back(variable.lower);
-    upper.push_back(variable.upper);
+    search.start.push_back(start_value(variable, base.resolved));
+    search.lower.push_back(variable.lower);
+    search.upper.push_back(variable.upper);
   }
-  for (const std::vector<double>& x : {search.start, lower, upper})
+  for (const std::vector<double>& x : {search.start, search.lower, search.upper})
     io::load_case(arguments.case_file, run_overrides(arguments, search, x));
   search.dir = arguments.output_dir.empty() ? fs::path("out") / (base.name + "_optimise")
                                             : arguments.output_dir;
@@ -172,19 +171,13 @@ SearchSettings settings_of(const OptimiseArguments& arguments) {
 
 int search_and_report(const OptimiseArguments& arguments, const Search& search,
                       EvaluationCache& cache) {
-  std::vector<double> lower;
-  std::vector<double> upper;
-  for (const DesignVariable& variable : search.variables) {
-    lower.push_back(variable.lower);
-    upper.push_back(variable.upper);
-  }
   std::string reason;
   int code = kExitSuccess;
   try {
     reason =
         minimise(
             [&](const std::vector<double>& x) { return evaluate(arguments, search, cache, x); },
-            lower, upper, search.start, settings_of(arguments))
+            search.lower, search.upper, search.start, settings_of(arguments))
             .reason;
   } catch (const RunError& error) {
     reason = fmt::format("a run failed: {}", error.what());

@@ -4,8 +4,18 @@
 
 namespace partimix::cfd {
 
+namespace {
+
+bool outside_cavity(const geometry::Shape* shape, const Vec3& x) {
+  return shape != nullptr && shape->blocks_outside_cavity() && shape->signed_distance(x) > 0.0 &&
+         !shape->beyond_open_end(x, {});
+}
+
+}  // namespace
+
 BlockedCells blocked_by_walls(const grid::StaggeredGrid& grid,
-                              std::span<const std::shared_ptr<const geometry::Surface>> walls) {
+                              std::span<const std::shared_ptr<const geometry::Surface>> walls,
+                              std::span<const std::shared_ptr<const geometry::Shape>> shapes) {
   BlockedCells blocked{open_mask(grid), std::vector<std::int32_t>(grid.cell_count(), -1)};
   double h = 0.0;
   for (int axis = 0; axis < grid.dimensions(); ++axis)
@@ -17,7 +27,8 @@ BlockedCells blocked_by_walls(const grid::StaggeredGrid& grid,
     for (std::size_t w = 0; w < walls.size(); ++w) {
       geometry::SurfacePoint point;
       // A centre on the surface is blocked: round-off in its coordinate must not decide.
-      if (walls[w]->nearest(centre, reach, point) && point.gap <= 1e-9 * h) {
+      const bool behind = walls[w]->nearest(centre, reach, point) && point.gap <= 1e-9 * h;
+      if (behind || (w < shapes.size() && outside_cavity(shapes[w].get(), centre))) {
         blocked.mask.open_cell[index] = 0;
         blocked.wall[index] = static_cast<std::int32_t>(w);
         break;

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include <fmt/format.h>
 
 #include "io/axis_names.hpp"
 #include "io/method_type.hpp"
 #include "io/rheology_section.hpp"
+#include "io/shape_section.hpp"
 
 namespace partimix::cfd {
 namespace {
@@ -16,13 +18,36 @@ using io::at_least;
 using io::kPositive;
 using io::Reader;
 
-void read_fluid(Reader& root, CfdConfig& config) {
+// `light_phase: {density, viscosity}` makes the fluid two-phase: the heavy phase (the fluid's
+// density and rheology) starts in `regions`, the light phase fills the other open cells.
+void read_phases(Reader& fluid, const io::Case& the_case, CfdConfig& config) {
+  if (!fluid.contains("light_phase"))
+    return;
+  Reader light = fluid.map("light_phase");
+  LightPhase phase;
+  phase.density = light.required<double>("density", kPositive);
+  phase.viscosity = light.required<double>("viscosity", kPositive);
+  if (!(phase.density < config.settings.density))
+    throw light.error("density", fmt::format("must be below the fluid's density {} kg/m^3: the "
+                                             "light phase lies above the heavy one",
+                                             config.settings.density));
+  light.done();
+  config.settings.light_phase = phase;
+  const std::filesystem::path folder = std::filesystem::path(the_case.file).parent_path();
+  for (Reader& region : fluid.list("regions")) {
+    config.heavy_regions.push_back(io::read_shape(region, the_case.domain.dimensions, folder));
+    region.done();
+  }
+}
+
+void read_fluid(Reader& root, const io::Case& the_case, CfdConfig& config) {
   Reader fluid = root.map("fluid");
   config.settings.density = fluid.required<double>("density", kPositive);
   config.settings.rheology = io::read_fluid_rheology(fluid);
   const materials::RheologyConfig& rheology = config.settings.rheology;
   if (rheology.model == "newtonian" && !(rheology.viscosity > 0.0))
     throw fluid.error("viscosity", "the cfd method needs a viscosity above zero");
+  read_phases(fluid, the_case, config);
   fluid.done();
 }
 
@@ -97,6 +122,7 @@ InPlaceSamples in_place_samples(const io::Case& the_case) {
 void read_walls(const io::Case& the_case, CfdConfig& config) {
   for (const io::WallSpec& wall : the_case.walls) {
     config.walls.push_back(wall.surface);
+    config.wall_shapes.push_back(wall.shape);
     config.wall_motions.push_back(
         geometry::motion_registry().create(wall.motion.type, wall.motion));
   }
@@ -125,7 +151,7 @@ void read_frame(Reader& section, const io::Case& the_case, CfdConfig& config) {
 std::shared_ptr<CfdSection> read_cfd_section(Reader& root, const io::Case& the_case) {
   auto spec = std::make_shared<CfdSection>();
   CfdConfig& config = spec->config;
-  read_fluid(root, config);
+  read_fluid(root, the_case, config);
   Reader section = root.map("cfd");
   config.cell_size = section.required<double>("cell_size", kPositive);
   read_numerics(section, config.settings);

@@ -1,5 +1,6 @@
 #include "cfd/cfd_solver.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -18,6 +19,39 @@ FluidFrame frame_of(const CfdConfig& config) {
   if (config.frame_wall < 0)
     return {};
   return FluidFrame(config.wall_motions[static_cast<std::size_t>(config.frame_wall)]);
+}
+
+constexpr int kSamplesAcross = 4;  // α at the start: sample points along each axis of a cell
+
+// The share of each open cell's sample points (kSamplesAcross per axis, evenly spaced) inside
+// one of the regions.
+std::vector<double> heavy_phase_fraction(
+    const FluidSolver& fluid, const std::vector<std::shared_ptr<const geometry::Shape>>& regions) {
+  const grid::StaggeredGrid& grid = fluid.grid();
+  const int dimensions = grid.dimensions();
+  const int count = dimensions == 2 ? kSamplesAcross * kSamplesAcross
+                                    : kSamplesAcross * kSamplesAcross * kSamplesAcross;
+  std::vector<double> fraction(grid.cell_count(), 0.0);
+  grid.for_each_cell([&](const std::array<int, 3>& cell, std::size_t c) {
+    if (!fluid.mask().open_cell[c])
+      return;
+    Vec3 centre = grid.cell_centre(cell[0], cell[1], cell[2]);
+    if (dimensions == 2)
+      centre[2] = 0.0;
+    int inside = 0;
+    for (int n = 0; n < count; ++n) {
+      Vec3 x = centre;
+      int rest = n;
+      for (int a = 0; a < dimensions; ++a, rest /= kSamplesAcross)
+        x[a] += ((rest % kSamplesAcross + 0.5) / kSamplesAcross - 0.5) * grid.spacing(a);
+      const bool in_any = std::any_of(regions.begin(), regions.end(), [&](const auto& region) {
+        return region->signed_distance(x) <= 0.0;
+      });
+      inside += in_any ? 1 : 0;
+    }
+    fraction[c] = static_cast<double>(inside) / count;
+  });
+  return fraction;
 }
 
 }  // namespace
@@ -63,9 +97,11 @@ CfdSolver::CfdSolver(ParticleStore& store, const Domain& domain, const CfdConfig
         "the fluid's frame: a fixed or sliding wall, a surface of revolution turning about its "
         "own axis, or the body that cfd.rotating_frame turns with (docs/cfd.md, \"Moving walls "
         "and the rotating frame\")");
-  BlockedCells blocked = blocked_by_walls(grid, config.walls);
+  BlockedCells blocked = blocked_by_walls(grid, config.walls, config.wall_shapes);
   wall_of_cell_ = std::move(blocked.wall);
   fluid_ = std::make_unique<FluidSolver>(grid, blocked.mask, config.sides, config.settings);
+  if (fluid_->two_phases())
+    fluid_->set_phase_fraction(heavy_phase_fraction(*fluid_, config.heavy_regions));
   lay_out_cells();
   update_cells();
 }
@@ -103,13 +139,13 @@ void CfdSolver::lay_out_cells() {
 // The particles' place, velocity (in the lab) and mass from the fluid: ρ ε V.
 void CfdSolver::update_cells() {
   const grid::StaggeredGrid& grid = fluid_->grid();
-  const double mass = config_.settings.density * grid.cell_volume();
   const std::vector<double>& eps = fluid_->void_fraction();
+  const std::vector<double>& density = fluid_->density();
   const geometry::RigidPose pose = frame_motion_.pose(time_);
   for (std::size_t p = 0; p < open_cells_.size(); ++p) {
     const auto [i, j, k] = grid.cell_coordinates(open_cells_[p]);
     const Vec3 u = fluid_->cell_velocity(i, j, k);
-    store_.mass()[p] = mass * eps[open_cells_[p]];
+    store_.mass()[p] = density[open_cells_[p]] * eps[open_cells_[p]] * grid.cell_volume();
     if (!frame_motion_.rotating()) {
       store_.velocity()[p] = u;
       continue;
@@ -168,7 +204,8 @@ std::map<std::string, double> CfdSolver::derived_parameters() const {
 }
 
 // Velocity (3 components) at the cell centres, pressure, void fraction, the grains' source S_p
-// (3 components), the viscosity and the open flag, per cell; in a rotating frame the image turns
+// (3 components), the viscosity and the open flag, per cell, and with two phases the heavy
+// phase's fraction α and the density; in a rotating frame the image turns
 // with the grid (its direction matrix), the velocity is the lab's and relative_velocity the
 // velocity relative to the frame, both in lab directions.
 const GridFrame* CfdSolver::grid_frame() {
@@ -203,6 +240,10 @@ const GridFrame* CfdSolver::grid_frame() {
                         {"open", 1, frame_open_}};
   if (frame_motion_.rotating())
     frame_.cell_arrays.push_back({"relative_velocity", 3, frame_relative_velocity_});
+  if (fluid_->two_phases()) {
+    frame_.cell_arrays.push_back({"phase_fraction", 1, fluid_->phase_fraction()});
+    frame_.cell_arrays.push_back({"density", 1, fluid_->density()});
+  }
   return &frame_;
 }
 
@@ -241,6 +282,8 @@ void CfdSolver::save(StateArchive& archive, const std::string& prefix) const {
   archive.put_doubles(prefix + "pressure", fluid_->pressure());
   archive.put_doubles(prefix + "correction", fluid_->last_correction());
   archive.put_doubles(prefix + "void_fraction", fluid_->void_fraction());
+  if (fluid_->two_phases())
+    archive.put_doubles(prefix + "phase_fraction", fluid_->phase_fraction());
   archive.put_scalar(prefix + "time", time_);
   archive.put_integers(prefix + "steps", std::vector<std::int64_t>{steps_});
 }
@@ -267,6 +310,8 @@ void CfdSolver::restore(const StateArchive& archive, const std::string& prefix) 
   const std::vector<double> correction = sized(archive, prefix + "correction", grid.cell_count());
   const std::vector<double> eps = sized(archive, prefix + "void_fraction", grid.cell_count());
   fluid_->restore(velocity, pressure, correction, eps);
+  if (fluid_->two_phases())
+    fluid_->set_phase_fraction(sized(archive, prefix + "phase_fraction", grid.cell_count()));
   FaceArrays previous;
   for (int axis = 0; axis < 3; ++axis)
     previous[static_cast<std::size_t>(axis)] =

@@ -8,6 +8,7 @@
 #include "cfd/fluid_solver.hpp"
 #include "cfd/wall_motions.hpp"
 #include "geometry/motion.hpp"
+#include "geometry/shape.hpp"
 #include "geometry/surface.hpp"
 
 namespace partimix::cfd {
@@ -20,8 +21,12 @@ struct CfdConfig {
   // (docs/cfd.md, "Walls: blocked cells"); the walls' motions, each wall's surface staying in
   // place in the fluid's frame (docs/cfd.md, "Moving walls and the rotating frame").
   std::vector<std::shared_ptr<const geometry::Surface>> walls;
+  std::vector<std::shared_ptr<const geometry::Shape>> wall_shapes;  // each wall's, or null
   std::vector<std::shared_ptr<const geometry::Motion>> wall_motions;
   InPlaceSamples in_place_samples;
+  // With two phases (settings.light_phase), where the heavy phase is at the start: fluid.regions
+  // (docs/cfd.md, "Two phases: volume of fluid").
+  std::vector<std::shared_ptr<const geometry::Shape>> heavy_regions;
   int frame_wall = -1;  // cfd.rotating_frame.wall: the wall whose body the grid turns with; -1 lab
   double max_cells = 0.0;  // limits.grid_nodes
 };

@@ -22,6 +22,9 @@ FluidSolver::FluidSolver(const grid::StaggeredGrid& grid, const FlowMask& mask,
       cell_void_fraction_(grid.cell_count(), 1.0),
       old_cell_void_fraction_(grid.cell_count(), 1.0),
       cell_viscosity_(grid.cell_count(), settings.rheology.viscosity),
+      phase_fraction_(grid.cell_count(), 1.0),
+      cell_density_(grid.cell_count(), settings.density),
+      face_density_(face_arrays(grid, settings.density)),
       void_fraction_(face_arrays(grid, 1.0)),
       old_void_fraction_(face_arrays(grid, 1.0)),
       drag_coefficient_(face_arrays(grid, 0.0)),
@@ -44,6 +47,7 @@ FluidSolver::FluidSolver(const grid::StaggeredGrid& grid, const FlowMask& mask,
   frame_forces_.gravity = settings.gravity;
   predictor_.lay_out(grid_, mask_);
   projection_.lay_out(grid_, mask_);
+  update_density();
 }
 
 // The faces on the box's sides carry the side's velocity normal to it.
@@ -105,6 +109,9 @@ double FluidSolver::stable_dt() const {
     if (fastest > 0.0)
       dt = std::min(dt, settings_.cfl * grid_.spacing(axis) / fastest);
   }
+  if (two_phases())
+    dt = std::min(dt, phase_transport_.stable_dt(grid_, mask_, void_fraction_, velocity_,
+                                                 cell_void_fraction_));
   for (const BoxSide& side : sides_)
     for (int axis = 0; axis < grid_.dimensions(); ++axis)
       if (side.velocity[axis] != 0.0)
@@ -143,44 +150,75 @@ void FluidSolver::start_void_fraction(std::span<const double> cells) {
   set_void_fraction(cells);
 }
 
-// D_f = ρ ε_f^{n+1} / Δt + K_f, r_f = ρ ε_f^n u_f / Δt - C_f + T_f - ε_f^{n+1} (p_above -
-// p_below) / h + ε_f^{n+1} ρ g + S_e,f, and the projection's a_f = ε_f^{n+1} / D_f (Δt / ρ without
-// grains).
+// D_f = ρ_f ε_f^{n+1} / Δt + K_f, r_f = ρ_f (ε_f^n u_f / Δt - C_f) + T_f - ε_f^{n+1} (p_above -
+// p_below) / h + ε_f^{n+1} ρ_f g + S_e,f, with C_f the convection of unit density, and the
+// projection's a_f = ε_f^{n+1} / D_f (Δt / ρ_f without grains).
 void FluidSolver::explicit_terms(double dt) {
-  const double rho = settings_.density;
   for (int a = 0; a < grid_.dimensions(); ++a)
     grid_.for_each_face(a, [&](const Coordinates& f, std::size_t index) {
       if (!mask_.open_face[a][index])
         return;
+      const double rho = face_density_[a][index];
       const double eps = void_fraction_[a][index];
       const double gradient = gradient_across(grid_, a, f, pressure_);
       diagonal_[a][index] = rho * eps / dt + drag_coefficient_[a][index];
-      rhs_[a][index] = rho * old_void_fraction_[a][index] * velocity_[a][index] / dt -
-                       convection_[a][index] + transpose_[a][index] - eps * gradient +
-                       eps * rho * frame_forces_.gravity[a] + grain_source_[a][index];
+      rhs_[a][index] =
+          rho * (old_void_fraction_[a][index] * velocity_[a][index] / dt - convection_[a][index]) +
+          transpose_[a][index] - eps * gradient + eps * rho * frame_forces_.gravity[a] +
+          grain_source_[a][index];
       coefficient_[a][index] = eps / diagonal_[a][index];
     });
   for (int a = 0; a < grid_.dimensions(); ++a)
     for (std::size_t index = 0; index < coefficient_[a].size(); ++index)
       if (mask_.outlet_face[a][index])
-        coefficient_[a][index] = dt / rho;
+        coefficient_[a][index] = dt / face_density_[a][index];
   for (std::size_t c = 0; c < source_.size(); ++c)
     source_[c] = (cell_void_fraction_[c] - old_cell_void_fraction_[c]) / dt;
 }
 
-// η(γ̇) of each open cell from the present velocity (a non-Newtonian fluid).
+// η(γ̇) of each open cell from the present velocity (a non-Newtonian fluid); with two phases
+// α η_heavy + (1 - α) η_light, α clipped to [0, 1].
 void FluidSolver::update_viscosity() {
-  if (!rheology_)
+  if (!rheology_ && !two_phases())
     return;
-  cell_shear_rates(grid_, mask_, sides_, wall_faces_, velocity_, shear_rate_);
-  for (std::size_t c = 0; c < cell_viscosity_.size(); ++c)
-    cell_viscosity_[c] = mask_.open_cell[c] ? rheology_->viscosity(shear_rate_[c]) : 0.0;
+  if (rheology_)
+    cell_shear_rates(grid_, mask_, sides_, wall_faces_, velocity_, shear_rate_);
+  for (std::size_t c = 0; c < cell_viscosity_.size(); ++c) {
+    if (!mask_.open_cell[c]) {
+      cell_viscosity_[c] = 0.0;
+      continue;
+    }
+    const double heavy =
+        rheology_ ? rheology_->viscosity(shear_rate_[c]) : settings_.rheology.viscosity;
+    if (!two_phases()) {
+      cell_viscosity_[c] = heavy;
+      continue;
+    }
+    const double alpha = std::clamp(phase_fraction_[c], 0.0, 1.0);
+    cell_viscosity_[c] = alpha * heavy + (1.0 - alpha) * settings_.light_phase->viscosity;
+  }
+}
+
+// ρ_c = α ρ_heavy + (1 - α) ρ_light, α clipped to [0, 1], and the faces' from the cells'.
+void FluidSolver::update_density() {
+  if (!two_phases())
+    return;
+  const double light = settings_.light_phase->density;
+  for (std::size_t c = 0; c < cell_density_.size(); ++c)
+    cell_density_[c] =
+        light + (settings_.density - light) * std::clamp(phase_fraction_[c], 0.0, 1.0);
+  faces_from_cells(cell_density_, face_density_);
+}
+
+void FluidSolver::set_phase_fraction(std::span<const double> cells) {
+  std::copy(cells.begin(), cells.end(), phase_fraction_.begin());
+  update_density();
 }
 
 LinearSolve FluidSolver::step(double dt) {
   update_viscosity();
-  convective_term(grid_, mask_, settings_.convection, settings_.density, old_void_fraction_,
-                  velocity_, convection_);
+  convective_term(grid_, mask_, settings_.convection, 1.0, old_void_fraction_, velocity_,
+                  convection_);
   transpose_viscous_term(grid_, mask_, cell_void_fraction_, cell_viscosity_, velocity_, transpose_);
   explicit_terms(dt);
   if (frame_forces_.rotating) {
@@ -189,7 +227,7 @@ LinearSolve FluidSolver::step(double dt) {
         extrapolated_[a][f] = 1.5 * velocity_[a][f] - 0.5 * previous_velocity_[a][f];
         previous_velocity_[a][f] = velocity_[a][f];
       }
-    add_frame_forces(grid_, mask_, frame_forces_, settings_.density, void_fraction_, extrapolated_,
+    add_frame_forces(grid_, mask_, frame_forces_, face_density_, void_fraction_, extrapolated_,
                      rhs_);
   }
   momentum_solve_ = predictor_.solve(grid_, sides_, cell_void_fraction_, cell_viscosity_, diagonal_,
@@ -199,6 +237,11 @@ LinearSolve FluidSolver::step(double dt) {
                                                    source_, velocity_, correction_);
   for (std::size_t c = 0; c < pressure_.size(); ++c)
     pressure_[c] += correction_[c];
+  if (two_phases()) {
+    phase_transport_.advance(grid_, mask_, void_fraction_, velocity_, old_cell_void_fraction_,
+                             cell_void_fraction_, dt, phase_fraction_);
+    update_density();
+  }
   return pressure;
 }
 

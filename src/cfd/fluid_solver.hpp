@@ -21,6 +21,7 @@
 #include "cfd/flow_mask.hpp"
 #include "cfd/fluid_frame.hpp"
 #include "cfd/momentum_predictor.hpp"
+#include "cfd/phase_transport.hpp"
 #include "cfd/pressure_projection.hpp"
 #include "cfd/wall_faces.hpp"
 #include "core/linear_solve.hpp"
@@ -30,14 +31,22 @@
 
 namespace partimix::cfd {
 
+// The light phase of a two-phase fluid, above the heavy one (air over mortar; docs/cfd.md, "Two
+// phases: volume of fluid"): Newtonian.
+struct LightPhase {
+  double density = 1.2;       // [kg/m³]
+  double viscosity = 1.8e-5;  // [Pa s]
+};
+
 struct FluidSettings {
-  double density = 1000.0;  // ρ [kg/m³]
+  double density = 1000.0;  // ρ [kg/m³]; of the heavy phase when there are two
   // η(γ̇); by default water's μ = 1e-3 Pa s.
   materials::RheologyConfig rheology = [] {
     materials::RheologyConfig water;
     water.viscosity = 1e-3;
     return water;
   }();
+  std::optional<LightPhase> light_phase;  // none: one phase fills the open cells
   Vec3 gravity = Vec3::Zero();
   ConvectionScheme convection = ConvectionScheme::tvd;
   double cfl = 0.4;                  // C_cfl
@@ -52,7 +61,8 @@ class FluidSolver {
   FluidSolver(const grid::StaggeredGrid& grid, const FlowMask& mask, const BoxSides& sides,
               const FluidSettings& settings);
 
-  // min(C_cfl min_f h / |u_f|, max_dt).
+  // min(C_cfl min_f h / |u_f|, max_dt), and with two phases the volume fraction's limit
+  // (cfd/phase_transport.hpp).
   double stable_dt() const;
   // Advances by dt; the pressure solve's outcome (the momentum solves' in momentum_solve()).
   LinearSolve step(double dt);
@@ -82,8 +92,17 @@ class FluidSolver {
   const FaceArrays& drag_coefficient() const { return drag_coefficient_; }
   const FaceArrays& grain_source() const { return grain_source_; }
   const FluidSettings& settings() const { return settings_; }
-  // η per cell [Pa s], as the last step used it (the rheology's at the shear rate then).
+  // η per cell [Pa s], as the last step used it (the rheology's at the shear rate then; with two
+  // phases α η_heavy + (1 - α) η_light).
   const std::vector<double>& viscosity() const { return cell_viscosity_; }
+  // ρ per cell [kg/m³]: the settings' density, with two phases α ρ_heavy + (1 - α) ρ_light.
+  const std::vector<double>& density() const { return cell_density_; }
+  // With two phases the heavy phase's volume fraction α per cell (1 with one phase); the step
+  // carries it (cfd/phase_transport.hpp).
+  bool two_phases() const { return settings_.light_phase.has_value(); }
+  const std::vector<double>& phase_fraction() const { return phase_fraction_; }
+  // α per cell, at the start or from a checkpoint (two phases only).
+  void set_phase_fraction(std::span<const double> cells);
 
   // The frame's gravity and fictitious forces for the next step (by default the settings'
   // gravity, no rotation).
@@ -108,6 +127,7 @@ class FluidSolver {
   void explicit_terms(double dt);
   void extrapolate_to_outlets();
   void update_viscosity();
+  void update_density();
 
   grid::StaggeredGrid grid_;
   FlowMask mask_;
@@ -122,6 +142,10 @@ class FluidSolver {
   std::vector<double> cell_void_fraction_;      // ε^{n+1}
   std::vector<double> old_cell_void_fraction_;  // ε^n
   std::vector<double> cell_viscosity_;
+  std::vector<double> phase_fraction_;  // α
+  std::vector<double> cell_density_;
+  FaceArrays face_density_;  // ρ_f: the mean of the two cells', the inner cell's on an outlet
+  PhaseTransport phase_transport_;
   FaceArrays void_fraction_;      // ε_f^{n+1}
   FaceArrays old_void_fraction_;  // ε_f^n
   FaceArrays drag_coefficient_;

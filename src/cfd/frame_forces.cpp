@@ -23,8 +23,9 @@ double across(const grid::StaggeredGrid& grid, const FaceArrays& velocity, int a
 }  // namespace
 
 void add_frame_forces(const grid::StaggeredGrid& grid, const FlowMask& mask,
-                      const FrameForces& forces, double density, const FaceArrays& void_fraction,
-                      const FaceArrays& velocity, FaceArrays& rhs) {
+                      const FrameForces& forces, const FaceArrays& density,
+                      const FaceArrays& void_fraction, const FaceArrays& velocity,
+                      FaceArrays& rhs) {
   const Vec3& omega = forces.omega;
   for (int a = 0; a < grid.dimensions(); ++a)
     grid.for_each_face(a, [&](const Coordinates& f, std::size_t index) {
@@ -36,7 +37,7 @@ void add_frame_forces(const grid::StaggeredGrid& grid, const FlowMask& mask,
       const Vec3 r = grid.face_centre(a, f[0], f[1], f[2]) - forces.axis_point;
       const Vec3 acceleration =
           -2.0 * omega.cross(u) - omega.cross(omega.cross(r)) - forces.omega_rate.cross(r);
-      rhs[a][index] += void_fraction[a][index] * density * acceleration[a];
+      rhs[a][index] += void_fraction[a][index] * density[a][index] * acceleration[a];
     });
 }
 

@@ -15,7 +15,7 @@ constexpr std::int64_t kHeld = -2;
 }  // namespace
 
 PressureProjection::PressureProjection(double tolerance, int max_iterations)
-    : solver_(tolerance, max_iterations) {}
+    : tolerance_(tolerance), solver_(tolerance, max_iterations) {}
 
 // Regions of open cells joined through open faces, by breadth-first search; the first cell of
 // each (in index order) is held at φ = 0 unless the region has an outlet face.
@@ -163,6 +163,16 @@ void PressureProjection::correct(const grid::StaggeredGrid& grid, const FlowMask
     });
 }
 
+LinearSolve PressureProjection::solve_directly(const LinearSolve& iterative) {
+  const Eigen::SparseMatrix<double> a = matrix_;
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factors(a);
+  if (factors.info() != Eigen::Success)
+    return iterative;
+  solution_ = factors.solve(rhs_);
+  const double residual = (rhs_ - a * solution_).norm() / rhs_.norm();
+  return {iterative.iterations, residual, residual <= tolerance_};
+}
+
 void PressureProjection::set_guess(const std::vector<double>& correction) {
   for (std::size_t row = 0; row < row_cell_.size(); ++row)
     solution_[static_cast<Eigen::Index>(row)] = correction[row_cell_[row]];
@@ -179,6 +189,8 @@ LinearSolve PressureProjection::project(const grid::StaggeredGrid& grid, const F
   if (!row_cell_.empty()) {
     multigrid_.compute(matrix_);
     result = solver_.solve(matrix_, multigrid_, rhs_, solution_);
+    if (!result.converged)
+      result = solve_directly(result);
   }
   correction.assign(grid.cell_count(), 0.0);
   for (std::size_t row = 0; row < row_cell_.size(); ++row)

@@ -32,6 +32,10 @@ LinearSolve Bicgstab::solve(const Matrix& a, const Preconditioner& m, const Vect
   }
   const double target = tolerance_ * tolerance_ * b_norm2;
   restart(a, b, x);
+  if (r_.squaredNorm() > b_norm2) {
+    x.setZero(b.size());
+    restart(a, b, x);
+  }
   int iteration = 0;
   while (r_.squaredNorm() > target && iteration < max_iterations_) {
     double rho = shadow_.dot(r_);

@@ -19,7 +19,10 @@ class Bicgstab {
   Bicgstab(double tolerance, int max_iterations);
 
   // a x = b from the guess in x, until |b - a x| <= tolerance |b| (the recurrence's residual,
-  // as Eigen's) or max_iterations; x = 0 for b = 0.
+  // as Eigen's) or max_iterations; x = 0 for b = 0. A guess whose residual exceeds |b| is
+  // dropped for x = 0: when b falls to round-off (a fluid come to rest), the last solution as
+  // the guess would leave a residual that no iteration can bring below tolerance |b|, while
+  // from zero the reduction is relative and so reachable whatever the scale of b.
   LinearSolve solve(const Matrix& a, const Preconditioner& m, const Vector& b, Vector& x);
 
  private:

@@ -25,6 +25,10 @@ LinearSolve ConjugateGradient::solve(const Matrix& a, const Eigen::Ref<const Vec
   const double target = tolerance_ * tolerance_ * b_norm2;
   r_ = b;
   r_.noalias() -= a * x;
+  if (r_.squaredNorm() > b_norm2) {
+    x.setZero(b.size());
+    r_ = b;
+  }
   z_ = inverse_diagonal_.cwiseProduct(r_);
   p_ = z_;
   double rz = r_.dot(z_);

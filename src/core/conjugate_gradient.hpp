@@ -21,7 +21,8 @@ class ConjugateGradient {
   // The preconditioner of `a`, 1 / a_ii (1 where a_ii = 0), for the solves that follow.
   void compute(const Matrix& a);
   // a x = b from the guess in x, until |b - a x| <= tolerance |b| (the recurrence's residual)
-  // or max_iterations; x = 0 for b = 0.
+  // or max_iterations; x = 0 for b = 0. A guess whose residual exceeds |b| is dropped for
+  // x = 0, as in core/bicgstab.hpp (b at round-off, the guess the last O(1) solution).
   LinearSolve solve(const Matrix& a, const Eigen::Ref<const Vector>& b, Vector& x);
 
  private:

@@ -115,9 +115,11 @@ CfdDemCoupling::Sample CfdDemCoupling::sample(std::size_t p, bool with_pressure)
   }
   s.void_fraction = 0.0;
   s.viscosity = 0.0;
+  s.density = 0.0;
   for (const KernelWeights::Weight& w : cells) {
     s.void_fraction += w.weight * void_fraction_[w.cell];
     s.viscosity += w.weight * fluid.viscosity()[w.cell];
+    s.density += w.weight * fluid.density()[w.cell];
   }
   for (int a = 0; a < fluid.grid().dimensions(); ++a)
     for (const FaceWeights::Weight& w : face_weights_.of(a, p)) {
@@ -189,7 +191,6 @@ void CfdDemCoupling::map_grains() {
 // "The forces on a grain").
 void CfdDemCoupling::set_drag() {
   const ParticleStore& store = grains_.particles();
-  const cfd::FluidSettings& fluid = fluid_.fluid().settings();
   drag_.assign(store.size(), 0.0);
   velocities_.assign(store.velocity().begin(), store.velocity().end());
   for (std::size_t p = 0; p < store.size(); ++p) {
@@ -198,7 +199,7 @@ void CfdDemCoupling::set_drag() {
     if (!s.mapped)
       continue;
     const Vec3 slip = s.velocity - store.velocity()[p];
-    const DragState state{s.void_fraction, slip.norm(), diameters_[id], fluid.density, s.viscosity};
+    const DragState state{s.void_fraction, slip.norm(), diameters_[id], s.density, s.viscosity};
     drag_[p] = law_->coefficient(state) * volumes_[id];
   }
 }
@@ -210,7 +211,6 @@ void CfdDemCoupling::set_drag() {
 // the force K_i (u_i - v_i) + the others as set.
 void CfdDemCoupling::set_grain_forces(double dt) {
   const ParticleStore& store = grains_.particles();
-  const double density = fluid_.fluid().settings().density;
   const double sub_dt = dt / settings_.grain_sub_steps;
   ids_.assign(store.id().begin(), store.id().end());
   fluid_velocities_.assign(store.size(), Vec3::Zero());
@@ -225,8 +225,8 @@ void CfdDemCoupling::set_grain_forces(double dt) {
       if (settings_.pressure_force == PressureForce::gradient)
         pressure_force_[p] = -volumes_[id] * s.pressure_gradient;
       else if (settings_.pressure_force == PressureForce::buoyancy)
-        pressure_force_[p] = -density * volumes_[id] * gravity_;
-      other_force_[p] = pressure_force_[p] + virtual_mass(p, id, s.velocity, dt);
+        pressure_force_[p] = -s.density * volumes_[id] * gravity_;
+      other_force_[p] = pressure_force_[p] + virtual_mass(p, id, s, dt);
     }
     if (sub_dt * drag_[p] > store.mass()[p])
       throw RunError(fmt::format(
@@ -244,16 +244,14 @@ void CfdDemCoupling::set_grain_forces(double dt) {
   }
 }
 
-// C_vm ρ V_i ((u_i^{n+1} - u_i^n) / Δt - a_i), the relative acceleration along the grain's path
+// C_vm ρ_i V_i ((u_i^{n+1} - u_i^n) / Δt - a_i), the relative acceleration along the grain's path
 // over the last step (seed 004's F_x; docs/cfd-dem.md, "The forces on a grain"); none in the first
 // step.
-Vec3 CfdDemCoupling::virtual_mass(std::size_t p, std::size_t id, const Vec3& fluid_velocity,
-                                  double dt) const {
+Vec3 CfdDemCoupling::virtual_mass(std::size_t p, std::size_t id, const Sample& s, double dt) const {
   if (!settings_.virtual_mass || accelerations_.empty())
     return Vec3::Zero();
-  const double mass =
-      settings_.virtual_mass_coefficient * fluid_.fluid().settings().density * volumes_[id];
-  return mass * ((fluid_velocity - previous_fluid_velocities_[p]) / dt - accelerations_[p]);
+  const double mass = settings_.virtual_mass_coefficient * s.density * volumes_[id];
+  return mass * ((s.velocity - previous_fluid_velocities_[p]) / dt - accelerations_[p]);
 }
 
 // K_f = Σ_i w_if K_i / V_f and S_e,f = Σ_i w_if (K_i v_i - D_i / Δt) / V_f, in the fluid's

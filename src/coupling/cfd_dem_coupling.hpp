@@ -60,6 +60,7 @@ class CfdDemCoupling final : public Coupling {
     Vec3 pressure_gradient = Vec3::Zero();
     double void_fraction = 1.0;
     double viscosity = 0.0;  // η of the fluid's cells around the grain
+    double density = 0.0;    // ρ of the fluid's cells around the grain (two phases: the mixture)
     bool mapped = true;      // false: the grain lies in no open cell
   };
   Sample sample(std::size_t p, bool with_pressure) const;
@@ -69,7 +70,7 @@ class CfdDemCoupling final : public Coupling {
   void follow_grains(double dt);
   void set_drag();
   void set_grain_forces(double dt);
-  Vec3 virtual_mass(std::size_t p, std::size_t id, const Vec3& fluid_velocity, double dt) const;
+  Vec3 virtual_mass(std::size_t p, std::size_t id, const Sample& s, double dt) const;
   void set_fluid_source(double dt);
   // The grain's velocity relative to the frame, in its directions.
   Vec3 relative_velocity(std::size_t p) const;

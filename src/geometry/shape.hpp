@@ -32,6 +32,10 @@ class Shape {
   // The triangles of a shape generated as a mesh (a truck drum), for the `stl` command; none for
   // the others.
   virtual TriangleSoup triangles() const { return {}; }
+  // Whether a grid blocks the cells outside the shape's cavity (signed distance above zero, not
+  // beyond its open end) rather than those behind its contact surface: a container whose contact
+  // surface is a shell with no behind (the truck drum's two-sided mesh).
+  virtual bool blocks_outside_cavity() const { return false; }
 };
 
 // Axis-aligned box [lo, hi]. Its surface: a container with open faces

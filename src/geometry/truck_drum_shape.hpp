@@ -32,6 +32,7 @@ class TruckDrumShape final : public Shape {
   std::unique_ptr<Surface> make_surface(bool solid,
                                         const std::vector<Face>& open_faces) const override;
   TriangleSoup triangles() const override { return triangles_; }
+  bool blocks_outside_cavity() const override { return true; }
 
   // x of the case in the drum's own frame, and back.
   Vec3 to_drum(const Vec3& x) const { return rotation_.transpose() * (x - axis_point_); }

@@ -124,16 +124,6 @@ TEST(CfdMethod, ARotatingFrameResumesBitForBit) {
   EXPECT_NE(read_file(dir / "whole" / last).find("Direction="), std::string::npos);
 }
 
-std::string key_of_error(const std::string& text) {
-  const TempDir dir;
-  try {
-    test_support::load_case_text(dir, text);
-  } catch (const InputError& error) {
-    return error.location().key_path;
-  }
-  return "no error";
-}
-
 std::string key_of_build_error(const std::string& text) {
   const TempDir dir;
   try {
@@ -154,13 +144,14 @@ TEST(CfdMethod, CaseErrorsNameTheirKey) {
   power_law.replace(
       power_law.find("viscosity: 0.01"), 15,
       "rheology: {model: power_law, consistency: 1, flow_index: 0.5, viscosity_max: 10}");
-  EXPECT_EQ(key_of_error(power_law), "no error");  // non-Newtonian fluids are taken
+  EXPECT_EQ(test_support::key_of_load_error(power_law),
+            "no error");  // non-Newtonian fluids are taken
   std::string no_outlet = cavity("1.0");
   no_outlet.replace(no_outlet.find("[1, 0]"), 6, "[1, -1]");
-  EXPECT_EQ(key_of_error(no_outlet), "cfd.sides");
+  EXPECT_EQ(test_support::key_of_load_error(no_outlet), "cfd.sides");
   std::string moving_outlet = cavity("1.0");
   moving_outlet.replace(moving_outlet.find("{velocity"), 9, "{wall: outlet, velocity");
-  EXPECT_EQ(key_of_error(moving_outlet), "cfd.sides.y+.velocity");
+  EXPECT_EQ(test_support::key_of_load_error(moving_outlet), "cfd.sides.y+.velocity");
   EXPECT_EQ(key_of_build_error(cavity("1.0",
                                       "walls:\n  - {shape: box, min: [0.2, 0.2], max: [0.8, "
                                       "0.8], solid: true, motion: {type: rotation, rpm: 10}}\n")),
@@ -168,16 +159,19 @@ TEST(CfdMethod, CaseErrorsNameTheirKey) {
   EXPECT_EQ(key_of_build_error(cavity("1.0", kTurningCylinder)), "no error");
   std::string no_wall = cavity("1.0", kTurningCylinder);
   no_wall.replace(no_wall.find("  sides"), 0, "  rotating_frame: {wall: 1}\n");
-  EXPECT_EQ(key_of_error(no_wall), "cfd.rotating_frame.wall");  // there is no walls[1]
+  EXPECT_EQ(test_support::key_of_load_error(no_wall),
+            "cfd.rotating_frame.wall");  // there is no walls[1]
   std::string fixed_frame =
       cavity("1.0", "walls:\n  - {shape: cylinder, center: [0.5, 0.5], radius: 0.2}\n");
   fixed_frame.replace(fixed_frame.find("  sides"), 0, "  rotating_frame: {wall: 0}\n");
-  EXPECT_EQ(key_of_error(fixed_frame), "cfd.rotating_frame.wall");  // walls[0] does not turn
+  EXPECT_EQ(test_support::key_of_load_error(fixed_frame),
+            "cfd.rotating_frame.wall");  // walls[0] does not turn
   std::string periodic = cavity("1.0");
   periodic.replace(periodic.find("max: [1, 1]}"), 12, "max: [1, 1], periodic: [y]}");
-  EXPECT_EQ(key_of_error(periodic), "cfd.sides.y+");
+  EXPECT_EQ(test_support::key_of_load_error(periodic), "cfd.sides.y+");
   std::string huge = cavity("1.0", "limits: {grid_nodes: 100}\n");
-  EXPECT_EQ(key_of_error(huge), "no error");  // the grid is made when the case is built
+  EXPECT_EQ(test_support::key_of_load_error(huge),
+            "no error");  // the grid is made when the case is built
   const TempDir dir;
   const io::Case the_case = test_support::load_case_text(dir, huge);
   try {

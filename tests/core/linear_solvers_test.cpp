@@ -102,6 +102,22 @@ TEST(Bicgstab, AZeroRightHandSideGivesZero) {
   EXPECT_EQ(x.norm(), 0.0);
 }
 
+// b at round-off (1e-17) with the last solution of an O(1) system as the guess, as a pressure
+// correction sees when the fluid comes to rest (two layers under gravity): from that guess the
+// residual cannot fall below 1e-10 |b|; the solver drops it for zero and converges.
+TEST(Bicgstab, ARoundOffRightHandSideConvergesDespiteALargeGuess) {
+  const Matrix a = convection_diffusion(200, 0.3);
+  const Vector b = 1e-17 * Vector::LinSpaced(a.rows(), -1.0, 2.0);
+  AggregationMultigrid multigrid;
+  multigrid.compute(a);
+  Bicgstab solver(1e-10, 1000);
+  Vector x = Vector::Constant(a.rows(), 3.0);
+  const LinearSolve result = solver.solve(a, multigrid, b, x);
+  EXPECT_TRUE(result.converged) << result.residual;
+  const Vector exact = direct_solution(a, b);
+  EXPECT_LT((x - exact).lpNorm<Eigen::Infinity>(), 1e-8 * exact.lpNorm<Eigen::Infinity>());
+}
+
 // A symmetric positive-definite system with a varying diagonal (the implicit viscosity's kind):
 // I + k (1D Laplacian) with k growing along the rows.
 TEST(ConjugateGradient, SolvesASymmetricPositiveDefiniteSystemAsTheDirectSolverDoes) {
@@ -126,6 +142,30 @@ TEST(ConjugateGradient, SolvesASymmetricPositiveDefiniteSystemAsTheDirectSolverD
   const LinearSolve result = solver.solve(symmetric, b, x);
   EXPECT_TRUE(result.converged);
   EXPECT_LE(result.residual, 1e-10);
+  EXPECT_LT((x - exact).lpNorm<Eigen::Infinity>(), 1e-8 * exact.lpNorm<Eigen::Infinity>());
+}
+
+// The round-off right-hand side of a fluid at rest from the last O(1) solution as the guess (see
+// Bicgstab's test): the guess is dropped for zero and the solve converges.
+TEST(ConjugateGradient, ARoundOffRightHandSideConvergesDespiteALargeGuess) {
+  const int n = 100;
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int i = 0; i < n; ++i) {
+    entries.emplace_back(i, i, 3.0);
+    if (i > 0)
+      entries.emplace_back(i, i - 1, -1.0);
+    if (i + 1 < n)
+      entries.emplace_back(i, i + 1, -1.0);
+  }
+  Matrix a(n, n);
+  a.setFromTriplets(entries.begin(), entries.end());
+  const Vector b = 1e-17 * Vector::LinSpaced(n, 1.0, -3.0);
+  ConjugateGradient solver(1e-10, 1000);
+  solver.compute(a);
+  Vector x = Vector::Constant(n, 2.0);
+  const LinearSolve result = solver.solve(a, b, x);
+  EXPECT_TRUE(result.converged) << result.residual;
+  const Vector exact = direct_solution(a, b);
   EXPECT_LT((x - exact).lpNorm<Eigen::Infinity>(), 1e-8 * exact.lpNorm<Eigen::Infinity>());
 }
 

@@ -11,6 +11,7 @@
 
 #include "app/runner.hpp"
 #include "app/simulation.hpp"
+#include "core/error.hpp"
 #include "core/state_archive.hpp"
 #include "io/case.hpp"
 #include "io/checkpoint_folder.hpp"
@@ -28,6 +29,17 @@ struct CaseRun {
 inline io::Case load_case_text(const TempDir& dir, const std::string& text) {
   std::ofstream(dir / "case.yaml") << text;
   return io::load_case((dir / "case.yaml").string());
+}
+
+// The key an InputError names when the case `text` is loaded, or "no error".
+inline std::string key_of_load_error(const std::string& text) {
+  const TempDir dir;
+  try {
+    load_case_text(dir, text);
+  } catch (const InputError& error) {
+    return error.location().key_path;
+  }
+  return "no error";
 }
 
 // Runs `simulation` (built from `the_case`) with its outputs in `out`, from `checkpoint` when
