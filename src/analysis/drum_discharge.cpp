@@ -25,7 +25,7 @@ DrumDischarge::DrumDischarge(const DrumMeasures& options) : options_(options) {
 
 void DrumDischarge::sample(const ParticleStore& particles, double time, std::span<double> values) {
   const GrainVolumes volume(particles, "drum_discharge");
-  const Field<std::int32_t>& species = grain_species(particles, "drum_discharge");
+  const Field<std::int32_t>* species = particles.find_integer("species");
   const geometry::TruckDrumGeometry& drum = options_.drum->drum();
   const double length = drum.length();
   const double stream_end = length + 2.0 * drum.parameters().opening_radius;
@@ -41,7 +41,7 @@ void DrumDischarge::sample(const ParticleStore& particles, double time, std::spa
       inside += v;
     } else if (place.z > length && place.z <= stream_end) {
       stream += v;
-      if (species.values[i] == options_.coarse_species)
+      if (species != nullptr && species->values[i] == options_.coarse_species)
         coarse += v;
     }
   }

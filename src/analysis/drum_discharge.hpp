@@ -8,7 +8,9 @@
 // [fit_from, fit_until] [m³/min]; and the uniformity test's relative difference of the coarse
 // aggregate between two samples of the stream, taken while D is 20-30% and 70-80% of the volume
 // discharged by the end, 100 |a - b| / ((a + b) / 2) with a, b the coarse shares of all the
-// stream volume sampled in each.
+// stream volume sampled in each. Any particles with a volume will do: grains (their solid
+// volume), MPM points, or a grid fluid's cells (the fluid's volume in each, with two phases the
+// heavy one's: the mortar); particles without `species` are not coarse aggregate.
 #include <vector>
 
 #include "analysis/analysis.hpp"

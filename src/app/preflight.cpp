@@ -35,7 +35,13 @@ RunEstimate estimate_run(const io::Case& the_case, Simulation& simulation) {
 }
 
 void take_first_step(const io::Case& the_case, Simulation& simulation, double dt) {
-  RunClock(the_case, simulation).advance(0.0, dt);
+  const std::string& first = the_case.methods.front().name;
+  try {
+    RunClock(the_case, simulation).advance(0.0, dt);
+  } catch (const RunError& error) {
+    throw InputError(the_case.locate(first),
+                     fmt::format("the first step (dt = {:.3g} s) fails: {}", dt, error.what()));
+  }
   for (std::size_t m = 0; m < simulation.methods.size(); ++m) {
     const io::MethodInstance& method = simulation.methods[m];
     if (const auto bad = find_bad_particle(*method.store, method.solver->domain())) {

@@ -1,14 +1,18 @@
 #include "cfd/blocked_cells.hpp"
 
 #include <algorithm>
+#include <optional>
 
 namespace partimix::cfd {
 
 namespace {
 
-bool outside_cavity(const geometry::Shape* shape, const Vec3& x) {
-  return shape != nullptr && shape->blocks_outside_cavity() && shape->signed_distance(x) > 0.0 &&
-         !shape->beyond_open_end(x, {});
+// What the wall's shape says of the cell at x, if it says anything.
+std::optional<bool> shape_blocks(std::span<const std::shared_ptr<const geometry::Shape>> shapes,
+                                 std::size_t w, const Vec3& x, double h) {
+  if (w >= shapes.size() || shapes[w] == nullptr)
+    return std::nullopt;
+  return shapes[w]->blocks_grid_cell(x, h);
 }
 
 }  // namespace
@@ -27,8 +31,10 @@ BlockedCells blocked_by_walls(const grid::StaggeredGrid& grid,
     for (std::size_t w = 0; w < walls.size(); ++w) {
       geometry::SurfacePoint point;
       // A centre on the surface is blocked: round-off in its coordinate must not decide.
-      const bool behind = walls[w]->nearest(centre, reach, point) && point.gap <= 1e-9 * h;
-      if (behind || (w < shapes.size() && outside_cavity(shapes[w].get(), centre))) {
+      const std::optional<bool> by_shape = shape_blocks(shapes, w, centre, h);
+      const bool closed =
+          by_shape ? *by_shape : walls[w]->nearest(centre, reach, point) && point.gap <= 1e-9 * h;
+      if (closed) {
         blocked.mask.open_cell[index] = 0;
         blocked.wall[index] = static_cast<std::int32_t>(w);
         break;

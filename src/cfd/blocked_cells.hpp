@@ -1,9 +1,9 @@
 #pragma once
 // The cells of a grid fluid that walls block (docs/cfd.md, "Walls: blocked cells"): a cell is
 // blocked when its centre lies on or behind the surface of a wall (the staircase
-// representation), or for a wall whose shape blocks_outside_cavity() (the truck drum) when it
-// lies outside the cavity and not beyond its open end; the faces' flags follow from the cells'
-// (cfd/flow_mask.hpp).
+// representation), or for a wall whose shape decides itself (Shape::blocks_grid_cell: the truck
+// drum, outside its cavity short of the opening or within half a cell of a blade) as the shape
+// says; the faces' flags follow from the cells' (cfd/flow_mask.hpp).
 #include <cstdint>
 #include <memory>
 #include <span>

@@ -19,7 +19,8 @@ using io::kPositive;
 using io::Reader;
 
 // `light_phase: {density, viscosity}` makes the fluid two-phase: the heavy phase (the fluid's
-// density and rheology) starts in `regions`, the light phase fills the other open cells.
+// density and rheology) starts in `regions`, the light phase fills the other open cells. A
+// region may also be a `plane`: the half-space behind it, a level under its normal.
 void read_phases(Reader& fluid, const io::Case& the_case, CfdConfig& config) {
   if (!fluid.contains("light_phase"))
     return;
@@ -35,7 +36,10 @@ void read_phases(Reader& fluid, const io::Case& the_case, CfdConfig& config) {
   config.settings.light_phase = phase;
   const std::filesystem::path folder = std::filesystem::path(the_case.file).parent_path();
   for (Reader& region : fluid.list("regions")) {
-    config.heavy_regions.push_back(io::read_shape(region, the_case.domain.dimensions, folder));
+    const std::string shape = region.required_choice(
+        "shape", {"box", "cylinder", "plate", "mesh", "truck_drum", "plane"});
+    config.heavy_regions.push_back(
+        io::read_shape_of(shape, region, the_case.domain.dimensions, folder));
     region.done();
   }
 }

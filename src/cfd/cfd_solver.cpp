@@ -100,6 +100,7 @@ CfdSolver::CfdSolver(ParticleStore& store, const Domain& domain, const CfdConfig
   BlockedCells blocked = blocked_by_walls(grid, config.walls, config.wall_shapes);
   wall_of_cell_ = std::move(blocked.wall);
   fluid_ = std::make_unique<FluidSolver>(grid, blocked.mask, config.sides, config.settings);
+  volume_ = &store_.add_scalar("volume", "m^3", false).values;
   if (fluid_->two_phases())
     fluid_->set_phase_fraction(heavy_phase_fraction(*fluid_, config.heavy_regions));
   lay_out_cells();
@@ -136,7 +137,8 @@ void CfdSolver::lay_out_cells() {
     frame_open_[c] = 1.0;
 }
 
-// The particles' place, velocity (in the lab) and mass from the fluid: ρ ε V.
+// The particles' place, velocity (in the lab), mass ρ ε V and volume, the fluid's ε V (with two
+// phases the heavy phase's α ε V).
 void CfdSolver::update_cells() {
   const grid::StaggeredGrid& grid = fluid_->grid();
   const std::vector<double>& eps = fluid_->void_fraction();
@@ -145,7 +147,9 @@ void CfdSolver::update_cells() {
   for (std::size_t p = 0; p < open_cells_.size(); ++p) {
     const auto [i, j, k] = grid.cell_coordinates(open_cells_[p]);
     const Vec3 u = fluid_->cell_velocity(i, j, k);
-    store_.mass()[p] = density[open_cells_[p]] * eps[open_cells_[p]] * grid.cell_volume();
+    const std::size_t c = open_cells_[p];
+    store_.mass()[p] = density[c] * eps[c] * grid.cell_volume();
+    (*volume_)[p] = fluid_->phase_fraction()[c] * eps[c] * grid.cell_volume();
     if (!frame_motion_.rotating()) {
       store_.velocity()[p] = u;
       continue;
@@ -181,9 +185,13 @@ void CfdSolver::step(double dt) {
 void CfdSolver::set_frame(double dt) {
   if (frame_motion_.rotating())
     fluid_->set_frame_forces(frame_motion_.forces(time_ + 0.5 * dt, config_.settings.gravity));
+  set_walls_at(time_ + dt);
+}
+
+void CfdSolver::set_walls_at(double time) {
   if (!wall_motions_.any_moving())
     return;
-  wall_motions_.set_time(time_ + dt);
+  wall_motions_.set_time(time);
   fluid_->set_wall_velocities([&](const Vec3& x, std::size_t cell) {
     return wall_motions_.velocity(static_cast<std::size_t>(wall_of_cell_[cell]), x);
   });
@@ -309,6 +317,8 @@ void CfdSolver::restore(const StateArchive& archive, const std::string& prefix) 
   const std::vector<double> pressure = sized(archive, prefix + "pressure", grid.cell_count());
   const std::vector<double> correction = sized(archive, prefix + "correction", grid.cell_count());
   const std::vector<double> eps = sized(archive, prefix + "void_fraction", grid.cell_count());
+  time_ = archive.scalar(prefix + "time");
+  set_walls_at(time_);  // as the last step left them, for the viscosity the restore takes
   fluid_->restore(velocity, pressure, correction, eps);
   if (fluid_->two_phases())
     fluid_->set_phase_fraction(sized(archive, prefix + "phase_fraction", grid.cell_count()));
@@ -317,7 +327,6 @@ void CfdSolver::restore(const StateArchive& archive, const std::string& prefix) 
     previous[static_cast<std::size_t>(axis)] =
         sized(archive, fmt::format("{}previous_velocity_{}", prefix, axis), grid.face_count(axis));
   fluid_->restore_previous_velocity(previous);
-  time_ = archive.scalar(prefix + "time");
   const auto steps = archive.integers(prefix + "steps");
   if (steps.size() != 1)
     throw StateError(prefix + "steps: the wrong size");

@@ -2,8 +2,9 @@
 // The grid fluid as a method of a run (docs/cfd.md): the staggered grid over the case's domain,
 // its cells blocked by the walls, and the fluid's time step (cfd/fluid_solver.hpp). Its
 // particles are the open cells, each a fluid point at the cell's centre carrying the cell's
-// fluid mass ρ ε V and velocity, so that the analyses of any method's material (kinetic energy,
-// largest speed, profiles) measure the fluid; its frames are the grid's cells (.vti). In a
+// fluid mass ρ ε V, its `volume` (the heavy phase's with two phases) and velocity, so that the
+// analyses of any method's material (kinetic energy, largest speed, profiles, a truck drum's
+// discharge) measure the fluid; its frames are the grid's cells (.vti). In a
 // rotating frame (cfd.rotating_frame) the grid turns with a wall: the particles' positions and
 // velocities and the frames are given in the lab.
 #include <memory>
@@ -45,6 +46,7 @@ class CfdSolver final : public Solver {
   void lay_out_cells();
   void update_cells();
   void set_frame(double dt);
+  void set_walls_at(double time);
   void grain_source_cells();
 
   ParticleStore& store_;
@@ -55,6 +57,7 @@ class CfdSolver final : public Solver {
   WallMotions wall_motions_;
   std::vector<std::int32_t> wall_of_cell_;  // per cell: the wall blocking it, -1 open
   std::vector<std::size_t> open_cells_;     // the cell of each particle
+  std::vector<double>* volume_ = nullptr;   // the store's `volume`: the fluid's in each cell
   double time_ = 0.0;
   std::int64_t steps_ = 0;
   GridFrame frame_;

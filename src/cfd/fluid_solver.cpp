@@ -48,6 +48,7 @@ FluidSolver::FluidSolver(const grid::StaggeredGrid& grid, const FlowMask& mask,
   predictor_.lay_out(grid_, mask_);
   projection_.lay_out(grid_, mask_);
   update_density();
+  update_viscosity();
 }
 
 // The faces on the box's sides carry the side's velocity normal to it.
@@ -177,7 +178,9 @@ void FluidSolver::explicit_terms(double dt) {
 }
 
 // η(γ̇) of each open cell from the present velocity (a non-Newtonian fluid); with two phases
-// α η_heavy + (1 - α) η_light, α clipped to [0, 1].
+// α η_heavy + (1 - α) η_light, α clipped to [0, 1]. Taken whenever the velocity or α is set (at
+// the start, on a restore, after each step), so that a coupling reads, and the next step uses,
+// the viscosity of the present state.
 void FluidSolver::update_viscosity() {
   if (!rheology_ && !two_phases())
     return;
@@ -213,10 +216,10 @@ void FluidSolver::update_density() {
 void FluidSolver::set_phase_fraction(std::span<const double> cells) {
   std::copy(cells.begin(), cells.end(), phase_fraction_.begin());
   update_density();
+  update_viscosity();
 }
 
 LinearSolve FluidSolver::step(double dt) {
-  update_viscosity();
   convective_term(grid_, mask_, settings_.convection, 1.0, old_void_fraction_, velocity_,
                   convection_);
   transpose_viscous_term(grid_, mask_, cell_void_fraction_, cell_viscosity_, velocity_, transpose_);
@@ -242,6 +245,7 @@ LinearSolve FluidSolver::step(double dt) {
                              cell_void_fraction_, dt, phase_fraction_);
     update_density();
   }
+  update_viscosity();
   return pressure;
 }
 
@@ -266,6 +270,7 @@ void FluidSolver::restore(const FaceArrays& velocity, const std::vector<double>&
   pressure_ = pressure;
   correction_ = correction;
   projection_.set_guess(correction_);
+  update_viscosity();
 }
 
 Vec3 FluidSolver::cell_velocity(int i, int j, int k) const {

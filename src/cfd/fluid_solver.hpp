@@ -92,8 +92,8 @@ class FluidSolver {
   const FaceArrays& drag_coefficient() const { return drag_coefficient_; }
   const FaceArrays& grain_source() const { return grain_source_; }
   const FluidSettings& settings() const { return settings_; }
-  // η per cell [Pa s], as the last step used it (the rheology's at the shear rate then; with two
-  // phases α η_heavy + (1 - α) η_light).
+  // η per cell [Pa s] at the present velocity, the next step's (the rheology's at the shear rate
+  // now; with two phases α η_heavy + (1 - α) η_light).
   const std::vector<double>& viscosity() const { return cell_viscosity_; }
   // ρ per cell [kg/m³]: the settings' density, with two phases α ρ_heavy + (1 - α) ρ_light.
   const std::vector<double>& density() const { return cell_density_; }

@@ -5,6 +5,7 @@
 // particles from the signed distance, and DEM, which contacts the surface: on the surface's
 // closed parts the two agree (|gap| = |signed distance| near the surface).
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "core/vec.hpp"
@@ -32,10 +33,12 @@ class Shape {
   // The triangles of a shape generated as a mesh (a truck drum), for the `stl` command; none for
   // the others.
   virtual TriangleSoup triangles() const { return {}; }
-  // Whether a grid blocks the cells outside the shape's cavity (signed distance above zero, not
-  // beyond its open end) rather than those behind its contact surface: a container whose contact
-  // surface is a shell with no behind (the truck drum's two-sided mesh).
-  virtual bool blocks_outside_cavity() const { return false; }
+  // For a container whose contact surface is a shell with no behind (the truck drum's two-sided
+  // mesh), whether a grid of cells `cell` wide blocks the cell centred at x; none for the others,
+  // whose contact surface decides (cfd/blocked_cells.hpp).
+  virtual std::optional<bool> blocks_grid_cell(const Vec3& /*x*/, double /*cell*/) const {
+    return std::nullopt;
+  }
 };
 
 // Axis-aligned box [lo, hi]. Its surface: a container with open faces

@@ -27,6 +27,13 @@ TruckDrumShape::TruckDrumShape(const TruckDrumParameters& parameters, const Vec3
     }
 }
 
+std::optional<bool> TruckDrumShape::blocks_grid_cell(const Vec3& x, double cell) const {
+  const Vec3 local = to_drum(x);
+  if (local.z() > drum_.length())
+    return false;
+  return drum_.shell_distance(local) > 0.0 || drum_.blade_distance(local) < 0.5 * cell;
+}
+
 double TruckDrumShape::signed_distance(const Vec3& x) const {
   return drum_.signed_distance(to_drum(x));
 }

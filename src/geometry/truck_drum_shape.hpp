@@ -32,7 +32,9 @@ class TruckDrumShape final : public Shape {
   std::unique_ptr<Surface> make_surface(bool solid,
                                         const std::vector<Face>& open_faces) const override;
   TriangleSoup triangles() const override { return triangles_; }
-  bool blocks_outside_cavity() const override { return true; }
+  // Outside the shell and short of the opening's plane, or within half a cell of a blade: a blade
+  // thinner than a cell still blocks the cells it crosses (docs/truck-drum.md, "On a grid").
+  std::optional<bool> blocks_grid_cell(const Vec3& x, double cell) const override;
 
   // x of the case in the drum's own frame, and back.
   Vec3 to_drum(const Vec3& x) const { return rotation_.transpose() * (x - axis_point_); }

@@ -23,7 +23,8 @@ class CellGrid {
 
   // radius: the interaction radius (kernel support). Throws InputError at key domain.periodic
   // when a periodic axis is shorter than three radii, where the stencil would meet itself.
-  // Cells may be wider than radius / kReach so that there are at most 2^24 of them.
+  // Cells may be wider than radius / kReach so that there are at most 2^24 of them, nor many more
+  // than 16 per particle (laid out again in build() as the count changes).
   CellGrid(const Domain& domain, double radius);
 
   void build(std::span<const Vec3> positions);
@@ -46,6 +47,7 @@ class CellGrid {
 
  private:
   int cell_coordinate(double x, int axis) const;
+  void lay_out(double most);
   // Brings a neighbour cell coordinate into the grid across a periodic axis, setting the shift
   // of the image; false when it lies outside a non-periodic axis.
   bool wrap(int& c, int axis, double& shift) const {
@@ -63,6 +65,8 @@ class CellGrid {
 
   Domain domain_;
   double radius_;
+  std::array<double, 3> wanted_{1.0, 1.0, 1.0};  // cells per axis at radius / kReach
+  double most_ = 0.0;                            // the bound the cells were laid out for
   std::array<int, 3> cells_{1, 1, 1};
   Vec3 cell_size_;
   Vec3 periodic_length_;

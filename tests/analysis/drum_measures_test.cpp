@@ -165,5 +165,28 @@ TEST(DrumDischarge, NoStreamSampleIsACaveat) {
   EXPECT_FALSE(figures.contains("coarse_aggregate_difference"));
 }
 
+// A grid fluid's cells carry the fluid's volume (the mortar's with two phases) and no species:
+// three cells of 1, 2 and 3 cm³ in the cavity, the 3 cm³ one then past the opening.
+TEST(DrumDischarge, CellsCarryingAVolumeWithoutSpeciesAreMeasured) {
+  ParticleStore cells;
+  Field<double>& volume = cells.add_scalar("volume", "m^3");
+  for (int c = 0; c < 3; ++c) {
+    const std::size_t i = add_particle(cells, ParticleKind::fluid, at(0.05 + 0.05 * c, 0.0, 0.01));
+    volume.values[i] = 1e-6 * (c + 1);
+  }
+  DrumDischarge discharge(options());
+  EXPECT_NEAR(sample_once(discharge, cells, 0.0)[0], 6e-6, 1e-18);
+  cells.position()[2] = at(drum()->drum().length() + 0.01, 0.0, 0.0);
+  const std::vector<double> row = sample_once(discharge, cells, 1.0);
+  EXPECT_NEAR(row[0], 3e-6, 1e-18);
+  EXPECT_NEAR(row[1], 3e-6, 1e-18);
+  EXPECT_NEAR(row[3], 3e-6, 1e-18);  // in the stream
+  EXPECT_EQ(row[4], 0.0);            // none of it coarse aggregate
+  Figures figures;
+  discharge.add_figures(figures);
+  EXPECT_NEAR(figures.at("residual_rate"), 50.0, 1e-9);
+  EXPECT_FALSE(figures.contains("coarse_aggregate_difference"));
+}
+
 }  // namespace
 }  // namespace partimix::analysis

@@ -2,6 +2,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "cli_support.hpp"
@@ -28,6 +30,24 @@ TEST(CheckCommand, BadSetExitsTwoAndWritesNothing) {
   const Outcome outcome = run_partimix(scratch, {"check", "case.yaml", "--set", "sph.spacing=0"});
   EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
   EXPECT_THAT(outcome.err, HasSubstr("error: --set: sph.spacing: "));
+  EXPECT_THAT(scratch.work_entries(), ElementsAre("case.yaml"));
+}
+
+// A first step that fails by a RunError (a grain's DEM step beyond its relaxation time in a
+// fluid made a thousand times more viscous) was not caught by `check` and ended the program by
+// std::terminate: it is bad input, exit 2, naming the first method's section and the reason.
+TEST(CheckCommand, AFirstStepThatFailsIsBadInputNotACrash) {
+  const Scratch scratch;
+  std::ifstream file(std::string(PARTIMIX_SOURCE_DIR) + "/cases/cfdem_centrifuge.yaml");
+  std::stringstream text;
+  text << file.rdbuf();
+  scratch.write("case.yaml", text.str());
+  const Outcome outcome = run_partimix(
+      scratch, {"check", "case.yaml", "--set", "fluid.viscosity=100", "--set", "time.dt=auto"});
+  EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
+  EXPECT_THAT(outcome.err, HasSubstr("case.yaml:"));
+  EXPECT_THAT(outcome.err, HasSubstr("cfd: the first step (dt = "));
+  EXPECT_THAT(outcome.err, HasSubstr("relaxation time"));
   EXPECT_THAT(scratch.work_entries(), ElementsAre("case.yaml"));
 }
 

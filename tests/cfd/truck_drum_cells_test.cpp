@@ -3,7 +3,9 @@
 // Held, over every cell of a 40³ grid round the small tilted drum of the truck_drum tests: a
 // cell whose centre lies more than a cell inside the cavity (clear of shell and blades) is open;
 // one more than a cell outside the shell and short of the opening's plane is blocked (by the
-// drum, wall 0); one more than a cell beyond the opening's plane is open.
+// drum, wall 0); one more than a cell beyond the opening's plane is open; and one whose centre
+// lies within 0.4 of a cell of a blade (4 mm thick, a cell 10 mm) is blocked, so that the grid's
+// blades have no holes.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -35,10 +37,16 @@ TEST(TruckDrumCells, TheGridBlocksWhatLiesOutsideTheCavity) {
   int inside = 0;
   int outside = 0;
   int beyond = 0;
+  int blade = 0;
   grid.for_each_cell([&](const std::array<int, 3>& c, std::size_t index) {
     const Vec3 x = grid.cell_centre(c[0], c[1], c[2]);
     const bool open = fluid.mask().open_cell[index] != 0;
-    const double past_opening = drum.to_drum(x).z() - drum.drum().length();
+    const Vec3 local = drum.to_drum(x);
+    const double past_opening = local.z() - drum.drum().length();
+    if (past_opening < 0.0 && drum.drum().blade_distance(local) < 0.4 * h) {
+      EXPECT_FALSE(open) << x.transpose();
+      ++blade;
+    }
     if (past_opening > h) {
       EXPECT_TRUE(open) << x.transpose();
       ++beyond;
@@ -53,6 +61,7 @@ TEST(TruckDrumCells, TheGridBlocksWhatLiesOutsideTheCavity) {
   EXPECT_GT(inside, 100);
   EXPECT_GT(outside, 1000);
   EXPECT_GT(beyond, 1000);
+  EXPECT_GT(blade, 100);
 }
 
 }  // namespace

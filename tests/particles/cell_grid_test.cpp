@@ -128,6 +128,38 @@ TEST(CellGrid, AHugeDomainGetsBoundedWiderCells) {
   EXPECT_EQ(from_grid(domain, x, 0.1), (Pairs{{0, 0}, {0, 1}, {1, 0}, {1, 1}, {2, 2}}));
 }
 
+// A few fine grains in a large domain (1 mm grains in a truck drum): radius / 2 cells would be
+// 2^24, over which every build passes three times; the cells are bounded by the particle count
+// instead (16 per particle, at least 4096), laid out again as the count grows, and the
+// neighbours found stay every pair within the radius (against brute force).
+TEST(CellGrid, FewParticlesInALargeDomainGetCellsBoundedByTheirCount) {
+  Domain domain;
+  const double radius = 0.002;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Vec3> x;
+  for (int i = 0; i < 3000; ++i) {
+    const Vec3 p(unit(random), unit(random), unit(random));
+    x.push_back(p);
+    if (i % 3 == 0)  // close neighbours, so that there are pairs to find
+      x.push_back(p + Vec3(0.001, 0.0005, 0.0));
+  }
+  CellGrid grid(domain, radius);
+  for (const std::size_t n : {std::size_t{100}, x.size()}) {
+    const std::vector<Vec3> some(x.begin(), x.begin() + static_cast<std::ptrdiff_t>(n));
+    grid.build(some);
+    const auto& cells = grid.cells_per_axis();
+    const double count = static_cast<double>(cells[0]) * cells[1] * cells[2];
+    EXPECT_LE(count, std::max(4096.0, 16.0 * static_cast<double>(n))) << n;
+    Pairs pairs;
+    for (std::size_t i = 0; i < some.size(); ++i)
+      grid.for_each_neighbour(
+          i, some, [&](std::size_t j, const Vec3&, double) { pairs.emplace_back(i, j); });
+    std::sort(pairs.begin(), pairs.end());
+    EXPECT_EQ(pairs, brute_force(domain, some, radius)) << n;
+  }
+}
+
 TEST(CellGrid, NonFinitePositionsGoToAnEdgeCell) {
   Domain domain;
   CellGrid grid(domain, 0.2);
