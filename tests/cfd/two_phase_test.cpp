@@ -122,6 +122,29 @@ TEST(TwoPhase, TwoLayersFromNoPressureKeepOnlyTheFirstStepsSplittingError) {
   EXPECT_LT(layers.fastest(), 1.01 * first);
 }
 
+// The viscosity is the present state's from the start: a coupling reads it before the first
+// step, and it read the Newtonian default (0 for a Bingham fluid), which made the drag laws'
+// Reynolds number infinite and the first step NaN. A Bingham mortar at rest has its bound, 2 Pa s;
+// with two phases a cell of air has the air's.
+TEST(TwoPhase, TheViscosityIsThePresentStatesFromTheStart) {
+  const grid::StaggeredGrid grid(2, Vec3::Zero(), {4, 4, 1}, Vec3(0.1, 0.1, 1.0), {}, 1e6);
+  FluidSettings settings;
+  settings.density = 2800.0;
+  settings.rheology.model = "bingham";
+  settings.rheology.yield_stress = 10.0;
+  settings.rheology.plastic_viscosity = 0.5;
+  settings.rheology.viscosity_max = 2.0;
+  settings.light_phase = LightPhase{1.2, 1.8e-5};
+  FluidSolver fluid(grid, open_mask(grid), BoxSides{}, settings);
+  for (const double eta : fluid.viscosity())
+    EXPECT_DOUBLE_EQ(eta, 2.0);  // α = 1 until set
+  std::vector<double> alpha(grid.cell_count(), 1.0);
+  alpha[0] = 0.0;
+  fluid.set_phase_fraction(alpha);
+  EXPECT_DOUBLE_EQ(fluid.viscosity()[0], 1.8e-5);
+  EXPECT_DOUBLE_EQ(fluid.viscosity()[1], 2.0);
+}
+
 // A 1 x 1 m box of 10 x 10 cells, water up to y = 0.33 under air, a wave set going by a tilted
 // gravity. Its steps are 1/64 s (max_dt, which binds): a binary fraction, so that 32 of them end
 // exactly at 0.5 s and the run through takes the steps the run ending there takes (with 0.01 s
