@@ -1,6 +1,7 @@
 #include "particles/cell_grid.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -16,15 +17,18 @@ namespace {
 // At most this many cells, whatever the domain's size: a large domain gets larger cells (still
 // at least radius / kReach wide), so the grid's memory is bounded (4 bytes per cell).
 constexpr double kMaxCells = 1 << 24;
-// And at most this many per particle (but kFewestCells): a build passes over every cell three
-// times, so a few fine grains in a large domain (1 mm grains in a truck drum: 1,550 grains, the
-// 2^24 cells of 0.6 mm, 56 ms a step) get larger cells instead. Dense particles (SPH, packed
-// grains: a few cells per particle at radius / kReach) are not affected.
+// And at most this many per particle (but kFewestCells), the count rounded up to a power of two:
+// a build passes over every cell three times, so a few fine grains in a large domain (1,550 grains
+// of 1 mm in a truck drum had the 2^24 cells of 0.6 mm) get larger cells instead. Dense particles
+// (SPH, packed grains: a few cells per particle at radius / kReach) are not affected. The bound
+// depends on the count alone, so that a run resumed from a checkpoint lays the cells out as the
+// run that went through did, and changes only when the count crosses a power of two.
 constexpr double kCellsPerParticle = 16.0;
 constexpr double kFewestCells = 4096.0;
 
 double most_cells(std::size_t particles) {
-  return std::clamp(kCellsPerParticle * static_cast<double>(particles), kFewestCells, kMaxCells);
+  const double rounded = static_cast<double>(std::bit_ceil(std::max<std::size_t>(particles, 1)));
+  return std::clamp(kCellsPerParticle * rounded, kFewestCells, kMaxCells);
 }
 
 constexpr const char* kAxisNames[] = {"x", "y", "z"};
@@ -75,12 +79,11 @@ int CellGrid::cell_coordinate(double x, int axis) const {
   return c >= cells_[axis] - 1 ? cells_[axis] - 1 : static_cast<int>(c);
 }
 
-// The cells are laid out again when the particle count has moved the bound on them by more than
-// a factor of two, so that a filling run does not lay them out at every insertion.
+// The cells are laid out again when the particle count has changed the bound on them.
 void CellGrid::build(std::span<const Vec3> positions) {
   const std::size_t n = positions.size();
   const double most = most_cells(n);
-  if (most > 2.0 * most_ || most < 0.5 * most_)
+  if (most != most_)
     lay_out(most);
   cell_of_.resize(n);
   sorted_.resize(n);

@@ -23,8 +23,9 @@ class CellGrid {
 
   // radius: the interaction radius (kernel support). Throws InputError at key domain.periodic
   // when a periodic axis is shorter than three radii, where the stencil would meet itself.
-  // Cells may be wider than radius / kReach so that there are at most 2^24 of them, nor many more
-  // than 16 per particle (laid out again in build() as the count changes).
+  // Cells may be wider than radius / kReach so that there are at most 2^24 of them, nor more
+  // than 16 per particle, the count rounded up to a power of two (laid out again in build() when
+  // the count crosses one).
   CellGrid(const Domain& domain, double radius);
 
   void build(std::span<const Vec3> positions);
