@@ -26,17 +26,13 @@
 #include "analysis/front_position.hpp"
 #include "app/simulation.hpp"
 #include "validation/case_factory.hpp"
+#include "validation/martin_moyce.hpp"
 
 namespace partimix {
 namespace {
 
-struct Point {
-  double T;
-  double Z;
-};
-
-const std::vector<Point> kMartinMoyce = {
-    {0.832, 1.217}, {1.219, 1.474}, {1.997, 2.292}, {2.547, 2.995}};
+using Point = testing_cases::SurgePoint;
+using testing_cases::kMartinMoyce;
 
 const std::vector<Point> kKoshizukaOka = {{0.381, 1.111}, {0.769, 1.252}, {1.153, 1.505},
                                           {1.537, 1.892}, {1.935, 2.241}, {2.323, 2.615},

@@ -2,7 +2,7 @@
 // column a wide and 2a high (a = 0.146 m) under air in a closed tank 4a long and 3a high, its
 // surge front Z = x / a against T = t sqrt(2 g / a) beside Martin and Moyce's experiment
 // (1952, Phil. Trans. R. Soc. Lond. A 244, 312-324, figure 3, n² = 2; the points of
-// tests/validation/dam_break_test.cpp).
+// tests/validation/martin_moyce.hpp, shared with the SPH dam break).
 //
 // The front is where α falls through 1/2 along the floor's row of cells (linear between the
 // cell centres). Tolerance: within 20% of the experiment at each point up to T = 2.6, the bound
@@ -19,17 +19,13 @@
 
 #include "cfd/fluid_solver.hpp"
 #include "grid/staggered_grid.hpp"
+#include "validation/martin_moyce.hpp"
 
 namespace partimix::cfd {
 namespace {
 
-struct Point {
-  double T;
-  double Z;
-};
-
-const std::vector<Point> kMartinMoyce = {
-    {0.832, 1.217}, {1.219, 1.474}, {1.997, 2.292}, {2.547, 2.995}};
+using Point = testing_cases::SurgePoint;
+using testing_cases::kMartinMoyce;
 
 // x of the floor row's last fall of α through 1/2, over the column width.
 double front(const FluidSolver& fluid, double a) {
