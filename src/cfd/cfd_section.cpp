@@ -28,6 +28,7 @@ void read_phases(Reader& fluid, const io::Case& the_case, CfdConfig& config) {
   LightPhase phase;
   phase.density = light.required<double>("density", kPositive);
   phase.viscosity = light.required<double>("viscosity", kPositive);
+  phase.compression = light.optional<double>("compression", phase.compression, io::kNonNegative);
   if (!(phase.density < config.settings.density))
     throw light.error("density", fmt::format("must be below the fluid's density {} kg/m^3: the "
                                              "light phase lies above the heavy one",

@@ -25,6 +25,7 @@ FluidSolver::FluidSolver(const grid::StaggeredGrid& grid, const FlowMask& mask,
       phase_fraction_(grid.cell_count(), 1.0),
       cell_density_(grid.cell_count(), settings.density),
       face_density_(face_arrays(grid, settings.density)),
+      compression_(settings.light_phase ? settings.light_phase->compression : 0.0),
       void_fraction_(face_arrays(grid, 1.0)),
       old_void_fraction_(face_arrays(grid, 1.0)),
       drag_coefficient_(face_arrays(grid, 0.0)),
@@ -243,6 +244,8 @@ LinearSolve FluidSolver::step(double dt) {
   if (two_phases()) {
     phase_transport_.advance(grid_, mask_, void_fraction_, velocity_, old_cell_void_fraction_,
                              cell_void_fraction_, dt, phase_fraction_);
+    compression_.apply(grid_, mask_, void_fraction_, velocity_, cell_void_fraction_, dt,
+                       phase_fraction_);
     update_density();
   }
   update_viscosity();

@@ -20,6 +20,7 @@
 #include "cfd/convection.hpp"
 #include "cfd/flow_mask.hpp"
 #include "cfd/fluid_frame.hpp"
+#include "cfd/interface_compression.hpp"
 #include "cfd/momentum_predictor.hpp"
 #include "cfd/phase_transport.hpp"
 #include "cfd/pressure_projection.hpp"
@@ -36,6 +37,7 @@ namespace partimix::cfd {
 struct LightPhase {
   double density = 1.2;       // [kg/m³]
   double viscosity = 1.8e-5;  // [Pa s]
+  double compression = 1.0;   // c_α of the interface compression (0: none)
 };
 
 struct FluidSettings {
@@ -146,6 +148,7 @@ class FluidSolver {
   std::vector<double> cell_density_;
   FaceArrays face_density_;  // ρ_f: the mean of the two cells', the inner cell's on an outlet
   PhaseTransport phase_transport_;
+  InterfaceCompression compression_;
   FaceArrays void_fraction_;      // ε_f^{n+1}
   FaceArrays old_void_fraction_;  // ε_f^n
   FaceArrays drag_coefficient_;

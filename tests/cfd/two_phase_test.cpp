@@ -213,6 +213,11 @@ TEST(TwoPhase, CaseErrorsNameTheirKey) {
                          "min: [0, 0], max: [1, 1]}]\n")),
             "fluid.light_phase.viscosity");
   EXPECT_EQ(test_support::key_of_load_error(
+                sloshing("1",
+                         "  light_phase: {density: 1.2, viscosity: 1.8e-5, compression: -1}\n  "
+                         "regions: [{shape: box, min: [0, 0], max: [1, 1]}]\n")),
+            "fluid.light_phase.compression");
+  EXPECT_EQ(test_support::key_of_load_error(
                 sloshing("1", "  light_phase: {density: 1.2, viscosity: 1.8e-5}\n")),
             "fluid.regions");
   EXPECT_EQ(test_support::key_of_load_error(
