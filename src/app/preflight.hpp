@@ -22,8 +22,8 @@ RunEstimate estimate_run(const io::Case& the_case, Simulation& simulation);
 
 // Takes the first step (changing the simulation) and throws InputError at the section of the
 // first method whose particles it leaves non-finite or outside the domain, or at the first
-// method's section when the step itself fails (a solve that does not converge, a grain's step
-// beyond its relaxation time: a RunError, which `check` would otherwise not catch).
+// method's section when the step itself fails (a solve that does not converge: a RunError,
+// which `check` would otherwise not catch).
 void take_first_step(const io::Case& the_case, Simulation& simulation, double dt);
 
 }  // namespace partimix::app

@@ -205,13 +205,13 @@ void CfdDemCoupling::set_drag() {
 }
 
 // F_i = K_i u_i + the pressure's or buoyancy's force, u_i and ∇p from the fluid's new state,
-// held for the grains' sub-steps, whose length must not exceed the grain's relaxation time
-// m_i / K_i. In a rotating frame u_i's part Ω × (x_i - a) is left to the DEM, which takes it at
-// the grain's place in each sub-step (dem/external_forces.hpp). The frames' fields get ε_i and
-// the force K_i (u_i - v_i) + the others as set.
+// held for the grains' sub-steps, which take the drag backward in time, so that their length may
+// exceed the grain's relaxation time m_i / K_i. In a rotating frame u_i's part Ω × (x_i - a) is
+// left to the DEM, which takes it at the grain's place in each sub-step
+// (dem/external_forces.hpp). The frames' fields get ε_i and the force K_i (u_i - v_i) + the
+// others as set.
 void CfdDemCoupling::set_grain_forces(double dt) {
   const ParticleStore& store = grains_.particles();
-  const double sub_dt = dt / settings_.grain_sub_steps;
   ids_.assign(store.id().begin(), store.id().end());
   fluid_velocities_.assign(store.size(), Vec3::Zero());
   other_force_.assign(store.size(), Vec3::Zero());
@@ -228,12 +228,6 @@ void CfdDemCoupling::set_grain_forces(double dt) {
         pressure_force_[p] = -s.density * volumes_[id] * gravity_;
       other_force_[p] = pressure_force_[p] + virtual_mass(p, id, s, dt);
     }
-    if (sub_dt * drag_[p] > store.mass()[p])
-      throw RunError(fmt::format(
-          "grain {}: the DEM's step {:.3g} s exceeds its relaxation time in the fluid, m / K = "
-          "{:.3g} s (docs/cfd-dem.md, \"One coupled step and the sub-cycles\"); raise "
-          "time.sub_steps.dem or lower cfd.max_dt",
-          id, sub_dt, store.mass()[p] / drag_[p]));
     const Vec3 turning = frame_.velocity_at(store.position()[p]);
     (*external_.force)[p] = drag_[p] * (fluid_velocities_[p] - turning) + other_force_[p];
     (*external_.drag)[p] = drag_[p];

@@ -241,14 +241,16 @@ void DemSolver::kick_and_drift(double dt) {
 void DemSolver::half_kick(std::size_t i, double dt, bool superquadric_spins) {
   const double m = store_.mass()[i];
   Vec3& v = store_.velocity()[i];
-  Vec3 load = (*force_)[i];
-  if (external_.force) {
+  const Vec3& load = (*force_)[i];
+  if (external_.force) {  // the drag backward in time over the half kick (external_forces.hpp)
     const Vec3 turning = external_.spin.cross(store_.position()[i] - external_.axis_point);
-    const Vec3 external = (*external_.force)[i] + (*external_.drag)[i] * (turning - v);
-    (*external_.impulse)[i] += 0.5 * dt * external;
-    load += external;
+    const double drag = (*external_.drag)[i];
+    const Vec3 held = (*external_.force)[i] + drag * turning;
+    v = (v + 0.5 * dt * ((load + held) / m + gravity_)) / (1.0 + 0.5 * dt * drag / m);
+    (*external_.impulse)[i] += 0.5 * dt * (held - drag * v);
+  } else {
+    v += 0.5 * dt * (load / m + gravity_);
   }
-  v += 0.5 * dt * (load / m + gravity_);
   if (const auto& rotor = rotors_[(*species_)[i]]) {
     kick_angular_momentum((*angular_momentum_)[i], (*torque_)[i], dt);
     if (superquadric_spins)  // the orientation of this step's frames (update_frames)

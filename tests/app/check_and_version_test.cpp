@@ -33,10 +33,29 @@ TEST(CheckCommand, BadSetExitsTwoAndWritesNothing) {
   EXPECT_THAT(scratch.work_entries(), ElementsAre("case.yaml"));
 }
 
-// A first step that fails by a RunError (a grain's DEM step beyond its relaxation time in a
-// fluid made a thousand times more viscous) was not caught by `check` and ended the program by
+// A first step that fails by a RunError (a solve that does not converge: the momentum
+// predictor given one iteration) was not caught by `check` and ended the program by
 // std::terminate: it is bad input, exit 2, naming the first method's section and the reason.
+// (The run error first met here, a grain's DEM step beyond its relaxation time in a fluid made a
+// thousand times more viscous, is no longer an error: the DEM takes the drag backward in time.)
 TEST(CheckCommand, AFirstStepThatFailsIsBadInputNotACrash) {
+  const Scratch scratch;
+  std::ifstream file(std::string(PARTIMIX_SOURCE_DIR) + "/cases/cfdem_centrifuge.yaml");
+  std::stringstream text;
+  text << file.rdbuf();
+  scratch.write("case.yaml", text.str());
+  const Outcome outcome =
+      run_partimix(scratch, {"check", "case.yaml", "--set", "cfd.max_iterations=1"});
+  EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
+  EXPECT_THAT(outcome.err, HasSubstr("case.yaml:"));
+  EXPECT_THAT(outcome.err, HasSubstr("cfd: the first step (dt = "));
+  EXPECT_THAT(outcome.err, HasSubstr("did not converge"));
+  EXPECT_THAT(scratch.work_entries(), ElementsAre("case.yaml"));
+}
+
+// The same case made a thousand times more viscous, with grains whose DEM step is then beyond
+// their relaxation time, is good input: the drag is backward in time in the DEM's kicks.
+TEST(CheckCommand, GrainsStepBeyondTheirRelaxationTimeInAViscousFluid) {
   const Scratch scratch;
   std::ifstream file(std::string(PARTIMIX_SOURCE_DIR) + "/cases/cfdem_centrifuge.yaml");
   std::stringstream text;
@@ -44,11 +63,7 @@ TEST(CheckCommand, AFirstStepThatFailsIsBadInputNotACrash) {
   scratch.write("case.yaml", text.str());
   const Outcome outcome = run_partimix(
       scratch, {"check", "case.yaml", "--set", "fluid.viscosity=100", "--set", "time.dt=auto"});
-  EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
-  EXPECT_THAT(outcome.err, HasSubstr("case.yaml:"));
-  EXPECT_THAT(outcome.err, HasSubstr("cfd: the first step (dt = "));
-  EXPECT_THAT(outcome.err, HasSubstr("relaxation time"));
-  EXPECT_THAT(scratch.work_entries(), ElementsAre("case.yaml"));
+  EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
 }
 
 TEST(CommandLine, VersionPrintsTheVersion) {
