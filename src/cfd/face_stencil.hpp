@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "cfd/flow_mask.hpp"
 #include "grid/staggered_grid.hpp"
 
 namespace partimix::cfd {
@@ -37,6 +38,17 @@ inline std::size_t cell_index(const grid::StaggeredGrid& grid, const Coordinates
 
 inline std::size_t face_index(const grid::StaggeredGrid& grid, int axis, const Coordinates& f) {
   return grid.face(axis, f[0], f[1], f[2]);
+}
+
+// The cell on side -1 or +1 of face f of component `axis` (its index in `cell`); true when it
+// exists and is open.
+inline bool open_cell_beside(const grid::StaggeredGrid& grid, const FlowMask& mask, int axis,
+                             const Coordinates& f, int side, std::size_t& cell) {
+  Coordinates c;
+  if (!cell_beside(grid, axis, f, side, c) || c[axis] >= grid.cells(axis))
+    return false;
+  cell = cell_index(grid, c);
+  return mask.open_cell[cell] != 0;
 }
 
 // (q_above - q_below) / h of a cell field q across face f of component `axis`, whose cells on

@@ -8,16 +8,6 @@
 namespace partimix::cfd {
 namespace {
 
-// The open cell beyond f on `side`, if any.
-bool open_cell_beside(const grid::StaggeredGrid& grid, const FlowMask& mask, int axis,
-                      const Coordinates& f, int side, std::size_t& cell) {
-  Coordinates c;
-  if (!cell_beside(grid, axis, f, side, c) || c[axis] >= grid.cells(axis))
-    return false;
-  cell = cell_index(grid, c);
-  return mask.open_cell[cell] != 0;
-}
-
 // α of the open cell one step along `axis` from c, or c's own where that cell is closed or beyond
 // the box (a one-sided difference there).
 double neighbour_fraction(const grid::StaggeredGrid& grid, const FlowMask& mask,

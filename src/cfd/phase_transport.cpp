@@ -9,15 +9,6 @@
 namespace partimix::cfd {
 namespace {
 
-bool is_open(const grid::StaggeredGrid& grid, const FlowMask& mask, int axis, const Coordinates& f,
-             int side, std::size_t& cell) {
-  Coordinates c;
-  if (!cell_beside(grid, axis, f, side, c) || c[axis] >= grid.cells(axis))
-    return false;
-  cell = cell_index(grid, c);
-  return mask.open_cell[cell] != 0;
-}
-
 // α_f between two open cells for a flux F along +axis: the upwind value plus the limited share
 // of the jump to the downwind one; the upwind value where the cell beyond it is not open.
 double face_fraction(const grid::StaggeredGrid& grid, const FlowMask& mask, int axis,
@@ -56,8 +47,8 @@ void PhaseTransport::advance(const grid::StaggeredGrid& grid, const FlowMask& ma
         return;
       std::size_t below = 0;
       std::size_t above = 0;
-      const bool below_open = is_open(grid, mask, a, f, -1, below);
-      const bool above_open = is_open(grid, mask, a, f, 1, above);
+      const bool below_open = open_cell_beside(grid, mask, a, f, -1, below);
+      const bool above_open = open_cell_beside(grid, mask, a, f, 1, above);
       double face = 0.0;
       if (mask.open_face[a][index]) {
         face = face_fraction(grid, mask, a, f, flux, fraction);
@@ -91,7 +82,7 @@ double PhaseTransport::stable_dt(const grid::StaggeredGrid& grid, const FlowMask
     grid.for_each_face(a, [&](const Coordinates& f, std::size_t index) {
       const double flux = void_fraction[a][index] * velocity[a][index] * grid.face_area(a);
       std::size_t upwind = 0;
-      if (flux != 0.0 && is_open(grid, mask, a, f, flux > 0.0 ? -1 : 1, upwind))
+      if (flux != 0.0 && open_cell_beside(grid, mask, a, f, flux > 0.0 ? -1 : 1, upwind))
         outflow_[upwind] += std::abs(flux);
     });
   double dt = std::numeric_limits<double>::infinity();

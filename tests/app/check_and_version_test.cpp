@@ -2,12 +2,11 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "cli_support.hpp"
 #include "dam_break_case.hpp"
+#include "support/temp_dir.hpp"
 
 namespace partimix::cli_test {
 namespace {
@@ -33,6 +32,12 @@ TEST(CheckCommand, BadSetExitsTwoAndWritesNothing) {
   EXPECT_THAT(scratch.work_entries(), ElementsAre("case.yaml"));
 }
 
+// cases/cfdem_centrifuge.yaml as case.yaml in the scratch folder.
+void write_centrifuge_case(const Scratch& scratch) {
+  scratch.write("case.yaml", test_support::read_file(std::string(PARTIMIX_SOURCE_DIR) +
+                                                     "/cases/cfdem_centrifuge.yaml"));
+}
+
 // A first step that fails by a RunError (a solve that does not converge: the momentum
 // predictor given one iteration) was not caught by `check` and ended the program by
 // std::terminate: it is bad input, exit 2, naming the first method's section and the reason.
@@ -40,10 +45,7 @@ TEST(CheckCommand, BadSetExitsTwoAndWritesNothing) {
 // thousand times more viscous, is no longer an error: the DEM takes the drag backward in time.)
 TEST(CheckCommand, AFirstStepThatFailsIsBadInputNotACrash) {
   const Scratch scratch;
-  std::ifstream file(std::string(PARTIMIX_SOURCE_DIR) + "/cases/cfdem_centrifuge.yaml");
-  std::stringstream text;
-  text << file.rdbuf();
-  scratch.write("case.yaml", text.str());
+  write_centrifuge_case(scratch);
   const Outcome outcome =
       run_partimix(scratch, {"check", "case.yaml", "--set", "cfd.max_iterations=1"});
   EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
@@ -57,10 +59,7 @@ TEST(CheckCommand, AFirstStepThatFailsIsBadInputNotACrash) {
 // their relaxation time, is good input: the drag is backward in time in the DEM's kicks.
 TEST(CheckCommand, GrainsStepBeyondTheirRelaxationTimeInAViscousFluid) {
   const Scratch scratch;
-  std::ifstream file(std::string(PARTIMIX_SOURCE_DIR) + "/cases/cfdem_centrifuge.yaml");
-  std::stringstream text;
-  text << file.rdbuf();
-  scratch.write("case.yaml", text.str());
+  write_centrifuge_case(scratch);
   const Outcome outcome = run_partimix(
       scratch, {"check", "case.yaml", "--set", "fluid.viscosity=100", "--set", "time.dt=auto"});
   EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
