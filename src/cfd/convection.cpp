@@ -52,11 +52,18 @@ double advected_value(const grid::StaggeredGrid& grid, ConvectionScheme scheme, 
   return phi_u + 0.5 * van_leer(r) * jump;
 }
 
+// The advected component a on a side of the box that f's control volume reaches: an outlet's
+// the face's own (zero gradient across it), a wall's its velocity (what an inlet brings in; a
+// wall with no flow across it carries no flux).
+double value_on_side(const BoxSide& wall, int a, double own) {
+  return wall.outlet ? own : wall.velocity[a];
+}
+
 }  // namespace
 
-void convective_term(const grid::StaggeredGrid& grid, const FlowMask& mask, ConvectionScheme scheme,
-                     double density, const FaceArrays& void_fraction, const FaceArrays& velocity,
-                     FaceArrays& out) {
+void convective_term(const grid::StaggeredGrid& grid, const FlowMask& mask, const BoxSides& sides,
+                     ConvectionScheme scheme, double density, const FaceArrays& void_fraction,
+                     const FaceArrays& velocity, FaceArrays& out) {
   for (int a = 0; a < grid.dimensions(); ++a) {
     out[a].assign(grid.face_count(a), 0.0);
     grid.for_each_face(a, [&](const Coordinates& p, std::size_t f) {
@@ -66,11 +73,15 @@ void convective_term(const grid::StaggeredGrid& grid, const FlowMask& mask, Conv
       for (int b = 0; b < grid.dimensions(); ++b)
         for (const int side : {-1, 1}) {
           Coordinates n;
-          if (!neighbour_face(grid, a, p, b, side, n))
-            continue;  // beyond a side of the box: no flux through the wall
+          const bool inside = neighbour_face(grid, a, p, b, side, n);
+          if (!inside && b == a)
+            continue;  // f lies on the side itself: not an unknown
           const double flux = advecting_flux(grid, a, p, b, side, void_fraction, velocity);
           const double mass = density * flux * grid.face_area(b);
-          sum += side * mass * advected_value(grid, scheme, a, p, n, b, side, flux, velocity[a]);
+          const double value =
+              inside ? advected_value(grid, scheme, a, p, n, b, side, flux, velocity[a])
+                     : value_on_side(box_side(sides, b, side), a, velocity[a][f]);
+          sum += side * mass * value;
         }
       out[a][f] = sum / grid.cell_volume();
     });

@@ -221,7 +221,7 @@ void FluidSolver::set_phase_fraction(std::span<const double> cells) {
 }
 
 LinearSolve FluidSolver::step(double dt) {
-  convective_term(grid_, mask_, settings_.convection, 1.0, old_void_fraction_, velocity_,
+  convective_term(grid_, mask_, sides_, settings_.convection, 1.0, old_void_fraction_, velocity_,
                   convection_);
   transpose_viscous_term(grid_, mask_, cell_void_fraction_, cell_viscosity_, velocity_, transpose_);
   explicit_terms(dt);

@@ -10,10 +10,11 @@
 // - Discharge through the opening (an outlet at its plane) from the start of a reversed turn:
 //   the volume discharged in 4 s at -60 rpm exceeds that at -30 rpm by at least a fifth (the
 //   blades convey a fixed volume per turn while the drum runs full enough, so twice the speed
-//   should give near twice the flow). Measured 3.9 mL against 1.5 mL with the interface
-//   compression (docs/cfd.md, "Interface compression"); 25.5 mL against 9.6 mL before it, when
-//   the mortar spread into a foam of mortar and air that spilled over the lip, so that the drum
-//   turned the other way, at +60 rpm, let 20.7 mL out too. What leaves is still mortar carried
+//   should give near twice the flow). Measured 3.4 mL against 1.5 mL since the outlet's
+//   convection was mended (docs/cfd.md, "Convection: upwind or TVD"; 3.9 mL before), with the
+//   interface compression (docs/cfd.md, "Interface compression"); 25.5 mL against 9.6 mL before it,
+//   when the mortar spread into a foam of mortar and air that spilled over the lip, so that the
+//   drum turned the other way, at +60 rpm, let 20.7 mL out too. What leaves is still mortar carried
 //   up the wall and over the lip, which rises with the speed, not the blades' conveying, which
 //   this test does not show (docs/truck-drum.md, "The mortar").
 // - A uniform suspension at rest: 144 grains of 1 mm (2960 kg/m³, the seed's) in the mortar,
