@@ -16,6 +16,7 @@ struct DrumMeasures {
   int coarse_species = 0;  // the species index of the coarse aggregate
   double threshold = 4.0;  // drum_segregation: the segregation degree a design must meet [%]
   double mixing_until = std::numeric_limits<double>::infinity();  // [s]: the summary's sample
+  double average_from = std::numeric_limits<double>::infinity();  // [s]: segregation_mean's start
   double fit_from = 0.0;                                          // drum_discharge's fit [s]
   double fit_until = std::numeric_limits<double>::infinity();     // [s]
 };

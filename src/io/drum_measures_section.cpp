@@ -50,6 +50,11 @@ void read_drum_measures(Reader& item, AnalysisSpec& analysis, const Case& the_ca
     options.threshold = item.optional<double>("threshold", options.threshold, kPositive);
     if (const std::optional<double> until = item.automatic<double>("mixing_until", kNonNegative))
       options.mixing_until = *until;
+    if (const std::optional<double> from = item.automatic<double>("average_from", kNonNegative)) {
+      if (!(*from <= options.mixing_until))
+        throw item.error("average_from", "average_from must not be later than mixing_until");
+      options.average_from = *from;
+    }
     return;
   }
   options.fit_from = item.optional<double>("fit_from", options.fit_from, kNonNegative);

@@ -7,7 +7,7 @@
 namespace partimix::io {
 
 // `wall` (a truck_drum that is fixed or turns about its own axis), `coarse_species`, and the
-// type's own: `bins`, `threshold`, `mixing_until`, or `fit_from`, `fit_until`.
+// type's own: `bins`, `threshold`, `mixing_until`, `average_from`, or `fit_from`, `fit_until`.
 void read_drum_measures(Reader& item, AnalysisSpec& analysis, const Case& the_case);
 
 }  // namespace partimix::io

@@ -5,11 +5,19 @@
 // second gives the rate 120 V_g m³/min and the flow column exactly, the residual rate 10% for 2
 // of 20 grains left, and the uniformity test's difference 100 |a - b| / ((a + b) / 2) of the
 // stream's coarse shares at a quarter (a = 1/2) and three quarters (b = 1) of the discharge.
+// The random mixture's degree S_r: over 2,000 mixtures of 20 grains in each of 10 slices, each
+// grain coarse with probability 0.3 (a fixed seed), the mean of S² is that of S_r² within 5%
+// (expected 1.005 times it, the slices being drawn from the mixture as it came out; the ratio's
+// own spread about 1.1%; measured 1.027), and S_r = 100 sqrt(9/100 · 10 · 0.21 / 10) / 0.3 = 45.8%
+// for a set of ten slices of ten grains, three coarse in each. segregation_mean averages S from
+// average_from.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <numbers>
+#include <random>
 #include <vector>
 
 #include "analysis/drum_discharge.hpp"
@@ -116,6 +124,56 @@ TEST(DrumSegregation, TheSummaryIsTheLastSampleBeforeMixingUntilAndSurvivesARepl
   Figures again;
   replayed.add_figures(again);
   EXPECT_EQ(again.values(), figures.values());
+}
+
+// Twenty grains in each of ten slices, each coarse with probability `p`.
+void fill_at_random(Grains& grains, double p, std::mt19937& random) {
+  std::bernoulli_distribution coarse(p);
+  const double length = drum()->drum().length();
+  for (int k = 0; k < 10; ++k)
+    for (int g = 0; g < 20; ++g)
+      grains.add(at((k + 0.5) * length / 10, 0.3 * g, 0.01), coarse(random) ? 1 : 0);
+}
+
+TEST(DrumSegregation, ARandomMixtureShowsTheRandomDegreeOnAverage) {
+  std::mt19937 random(20261130);
+  DrumSegregation segregation(options());
+  double squares = 0.0;
+  double random_squares = 0.0;
+  constexpr int kMixtures = 2000;
+  for (int n = 0; n < kMixtures; ++n) {
+    Grains grains;
+    fill_at_random(grains, 0.3, random);
+    const std::vector<double> values = sample_once(segregation, grains.store, 0.0);
+    squares += values[0] * values[0];
+    random_squares += values[2] * values[2];
+  }
+  std::printf("mean S^2 %.2f, mean S_r^2 %.2f\n", squares / kMixtures, random_squares / kMixtures);
+  EXPECT_NEAR(squares / random_squares, 1.0, 0.05);
+  Grains exact;
+  fill_slices(exact, 10, [](int) { return 3; });
+  const double expected = 100.0 * std::sqrt(9.0 / 100.0 * 10.0 * 0.21 / 10.0) / 0.3;
+  EXPECT_NEAR(sample_once(segregation, exact.store, 0.0)[2], expected, 1e-9);
+}
+
+TEST(DrumSegregation, TheMeanIsOverTheSamplesFromAverageFromToMixingUntil) {
+  Grains segregated;
+  fill_slices(segregated, 10, [](int k) { return k % 2 == 0 ? 4 : 6; });
+  Grains uniform;
+  fill_slices(uniform, 10, [](int) { return 5; });
+  DrumMeasures o = options();
+  o.average_from = 1.0;
+  o.mixing_until = 3.0;
+  DrumSegregation segregation(o);
+  sample_once(segregation, uniform.store, 0.0);     // before: not averaged
+  sample_once(segregation, segregated.store, 1.0);  // 20%
+  sample_once(segregation, uniform.store, 2.0);     // 0%
+  sample_once(segregation, uniform.store, 3.0);     // 0%
+  sample_once(segregation, segregated.store, 4.0);  // after: not averaged
+  Figures figures;
+  segregation.add_figures(figures);
+  EXPECT_NEAR(figures.at("segregation_mean"), 20.0 / 3.0, 1e-9);
+  EXPECT_NEAR(figures.at("segregation_degree"), 0.0, 1e-9);
 }
 
 TEST(DrumDischarge, RateResidualAndUniformityOfATwoGrainsASecondDischarge) {

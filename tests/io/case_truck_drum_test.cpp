@@ -85,13 +85,14 @@ TEST(CaseTruckDrum, BadValuesAreLocated) {
 
 TEST(CaseTruckDrum, ItsAnalysesLoadAndNeedADrumTurningAboutItsAxis) {
   const std::string analyses = R"(analyses:
-  - {type: drum_segregation, wall: 0, coarse_species: 0, bins: 8, threshold: 4, mixing_until: 5}
+  - {type: drum_segregation, wall: 0, coarse_species: 0, bins: 8, threshold: 4, mixing_until: 5, average_from: 4}
   - {type: drum_discharge, wall: 0, fit_from: 8, fit_until: 12}
 )";
   const io::Case loaded = load_text(kDemHead + kSchedule + analyses);
   ASSERT_EQ(loaded.analyses.size(), 2u);
   EXPECT_EQ(loaded.analyses[0].drum_measures.bins, 8);
   EXPECT_DOUBLE_EQ(loaded.analyses[0].drum_measures.mixing_until, 5.0);
+  EXPECT_DOUBLE_EQ(loaded.analyses[0].drum_measures.average_from, 4.0);
   EXPECT_DOUBLE_EQ(loaded.analyses[1].drum_measures.fit_until, 12.0);
   EXPECT_EQ(loaded.analyses[1].drum_measures.drum.get(), loaded.walls[0].shape.get());
   const std::string off_axis =
@@ -107,6 +108,10 @@ TEST(CaseTruckDrum, ItsAnalysesLoadAndNeedADrumTurningAboutItsAxis) {
                    replace_line(analyses, 3,
                                 "  - {type: drum_discharge, wall: 0, fit_from: 8, fit_until: 8}")),
       "analyses[1].fit_until");
+  EXPECT_EQ(key_of_error(kDemHead + replace_line(analyses, 2,
+                                                 "  - {type: drum_segregation, wall: 0, "
+                                                 "mixing_until: 5, average_from: 6}")),
+            "analyses[0].average_from");
 }
 
 TEST(CaseTruckDrum, NeedsThreeDimensions) {
