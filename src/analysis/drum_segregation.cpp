@@ -43,8 +43,8 @@ double variation_percent(const std::vector<double>& coarse, const std::vector<do
   return 100.0 * std::sqrt(squares / m) / mean;
 }
 
-// S_r = 100 sqrt((m - 1) / m² Σ_k P (1 - P) / n_k) / P over the m counted slices: the expected
-// square of S for grains put in the slices at random, each coarse with probability P (the coarse
+// S_r = 100 sqrt((m - 1) / m² Σ_k P (1 - P) / n_k) / P over the m counted slices: S_r² is the
+// expected S² for grains put in the slices at random, each coarse with probability P (the coarse
 // share of the counted slices' material), n_k = (Σ v)² / Σ v² slice k's effective number of
 // grains (its count for equal grains; docs/truck-drum.md, "Segregation degree").
 double random_mixture_percent(const std::vector<double>& coarse, const std::vector<double>& all,
