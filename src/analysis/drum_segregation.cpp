@@ -14,16 +14,15 @@ namespace {
 constexpr double kLeastShareOfMean = 0.05;
 
 // The slices counted: those with more than kLeastShareOfMean of the mean slice's material.
-std::vector<std::size_t> counted_slices(const std::vector<double>& all) {
+void count_slices(const std::vector<double>& all, std::vector<std::size_t>& counted) {
   double total = 0.0;
   for (double v : all)
     total += v;
   const double least = kLeastShareOfMean * total / static_cast<double>(all.size());
-  std::vector<std::size_t> counted;
+  counted.clear();
   for (std::size_t k = 0; k < all.size(); ++k)
     if (all[k] > least)
       counted.push_back(k);
-  return counted;
 }
 
 // 100 sd(phi) / mean(phi) over the counted slices (docs/truck-drum.md), the variance in two
@@ -73,6 +72,7 @@ DrumSegregation::DrumSegregation(const DrumMeasures& options)
       coarse_(static_cast<std::size_t>(std::max(options.bins, 0)), 0.0),
       all_(coarse_.size(), 0.0),
       squares_(coarse_.size(), 0.0) {
+  counted_.reserve(coarse_.size());
   if (!options.drum || options.bins < 2)
     throw std::invalid_argument("drum_segregation: needs a truck drum and at least 2 bins");
 }
@@ -104,10 +104,10 @@ void DrumSegregation::sample(const ParticleStore& particles, double time,
     coarse += coarse_[k];
     all += all_[k];
   }
-  const std::vector<std::size_t> counted = counted_slices(all_);
-  values[0] = variation_percent(coarse_, all_, counted);
+  count_slices(all_, counted_);
+  values[0] = variation_percent(coarse_, all_, counted_);
   values[1] = all > 0.0 ? coarse / all : 0.0;
-  values[2] = random_mixture_percent(coarse_, all_, squares_, counted);
+  values[2] = random_mixture_percent(coarse_, all_, squares_, counted_);
   record(time, values[0], values[2]);
 }
 

@@ -32,9 +32,10 @@ class DrumSegregation final : public Analysis {
   void record(double time, double degree, double random);
 
   DrumMeasures options_;
-  std::vector<double> coarse_;   // per slice, reused every sample: the coarse grains' volume,
-  std::vector<double> all_;      // all grains' volume,
-  std::vector<double> squares_;  // and the sum of their volumes' squares
+  std::vector<double> coarse_;        // per slice, reused every sample: the coarse grains' volume,
+  std::vector<double> all_;           // all grains' volume,
+  std::vector<double> squares_;       // and the sum of their volumes' squares
+  std::vector<std::size_t> counted_;  // the slices counted in the degree
   bool recorded_ = false;
   double degree_ = 0.0;
   double random_ = 0.0;

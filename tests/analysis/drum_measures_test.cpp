@@ -104,11 +104,20 @@ TEST(DrumSegregation, AUniformMixtureIsZeroAndEmptySlicesAreLeftOut) {
   EXPECT_EQ(figures.at("segregation_within_threshold"), 1.0);
 }
 
-TEST(DrumSegregation, TheSummaryIsTheLastSampleBeforeMixingUntilAndSurvivesAReplay) {
+// Slices whose coarse shares alternate 0.4 and 0.6 (S = 20%), and a uniform mixture (S = 0).
+struct TwoMixtures {
   Grains segregated;
-  fill_slices(segregated, 10, [](int k) { return k % 2 == 0 ? 4 : 6; });
   Grains uniform;
-  fill_slices(uniform, 10, [](int) { return 5; });
+  TwoMixtures() {
+    fill_slices(segregated, 10, [](int k) { return k % 2 == 0 ? 4 : 6; });
+    fill_slices(uniform, 10, [](int) { return 5; });
+  }
+};
+
+TEST(DrumSegregation, TheSummaryIsTheLastSampleBeforeMixingUntilAndSurvivesAReplay) {
+  const TwoMixtures mixtures;
+  const Grains& segregated = mixtures.segregated;
+  const Grains& uniform = mixtures.uniform;
   DrumMeasures o = options();
   o.mixing_until = 1.5;
   DrumSegregation segregation(o);
@@ -157,10 +166,9 @@ TEST(DrumSegregation, ARandomMixtureShowsTheRandomDegreeOnAverage) {
 }
 
 TEST(DrumSegregation, TheMeanIsOverTheSamplesFromAverageFromToMixingUntil) {
-  Grains segregated;
-  fill_slices(segregated, 10, [](int k) { return k % 2 == 0 ? 4 : 6; });
-  Grains uniform;
-  fill_slices(uniform, 10, [](int) { return 5; });
+  const TwoMixtures mixtures;
+  const Grains& segregated = mixtures.segregated;
+  const Grains& uniform = mixtures.uniform;
   DrumMeasures o = options();
   o.average_from = 1.0;
   o.mixing_until = 3.0;
