@@ -25,9 +25,6 @@ constexpr Index kLargestDirectSize = 20000;
 constexpr int kStalledSweeps = 10;
 constexpr double kJacobiWeight = 0.9;
 constexpr double kOverCorrection = 1.8;
-// The finest operator's off-diagonal entries below this fraction of their row's largest are
-// lumped onto the diagonal for the V-cycle (BiCGSTAB keeps the whole matrix).
-constexpr double kLumpedFraction = 0.3;
 // An unknown's aggregate while the passes run, and for good where it has no strong coupling.
 constexpr int kFree = -1;
 constexpr int kIsolated = -2;
@@ -144,7 +141,7 @@ void AggregationMultigrid::lump(const Matrix& a) {
   Level& level = levels_.front();
   level.begin(a.rows());
   for (Index i = 0; i < a.rows(); ++i) {
-    lump_row(a, i, kLumpedFraction, row_entries_);
+    lump_row(a, i, lumped_fraction_, row_entries_);
     for (const auto& [col, entry] : row_entries_)
       level.append(col, entry);
     level.end_row();

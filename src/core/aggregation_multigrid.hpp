@@ -30,7 +30,13 @@ class AggregationMultigrid : public Preconditioner {
   using MatrixView = Eigen::Map<const Matrix>;
   using Vector = Eigen::VectorXd;
 
-  AggregationMultigrid() = default;
+  // `lumped_fraction` > 0: the V-cycle works on the finest operator with each row's
+  // off-diagonal entries below that fraction of the row's largest lumped onto its diagonal
+  // (lump_weak_couplings; for the SPH Laplacian's wide stencil). 0: the operator as it is, as
+  // for a grid's 7-point operator, whose weak couplings (across a density jump, through a
+  // partly blocked face) may carry most of the solution's change (docs/sph.md, "The pressure
+  // solve").
+  explicit AggregationMultigrid(double lumped_fraction = 0.0) : lumped_fraction_(lumped_fraction) {}
 
   // The interface Eigen's iterative solvers call.
   template <class MatrixType>
@@ -90,6 +96,7 @@ class AggregationMultigrid : public Preconditioner {
   void cycle(std::size_t level) const;
   void solve_coarsest(const Level& level) const;
 
+  double lumped_fraction_;
   std::vector<Level> levels_;  // [0, level_count_) in use; the rest keep their buffers
   std::size_t level_count_ = 0;
   Coarsest coarsest_ = Coarsest::jacobi;

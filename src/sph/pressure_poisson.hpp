@@ -58,12 +58,15 @@ class PressurePoisson {
   // the lowest mode of the discrete Laplacian, (pi dp / L)^2 of the diagonal, up to L = 300
   // spacings across.
   static constexpr double kRegularisation = 1e-6;
+  // The multigrid's V-cycle drops couplings below this fraction of a row's largest onto the
+  // diagonal (docs/sph.md, "The pressure solve", "Lumping the weak couplings").
+  static constexpr double kLumpedFraction = 0.3;
   using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
   std::vector<ThreadRows> thread_rows_;
   Eigen::VectorXd rhs_;
   Eigen::VectorXd solution_;
   Matrix matrix_;
-  AggregationMultigrid multigrid_;
+  AggregationMultigrid multigrid_{kLumpedFraction};
   Bicgstab solver_;
   bool has_dirichlet_row_ = false;
   double mean_offset_ = 0.0;  // the constant taken off the last solution: the next one's guess
