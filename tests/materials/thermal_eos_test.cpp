@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "materials/thermal_eos.hpp"
+#include "materials/thermal_eos/tait.hpp"
 
 namespace partimix::materials {
 namespace {
@@ -164,6 +165,14 @@ TEST(ThermalEos, TaitDerivativeAtReferenceDensityIsSoundSpeedSquared) {
   EXPECT_EQ(liquid->pressure(1000.0, 300.0), 0.0);
   EXPECT_DOUBLE_EQ(liquid->pressure_density_derivative(1000.0, 300.0), 400.0);
   EXPECT_DOUBLE_EQ(adiabatic_sound_speed(*liquid, 1000.0, 300.0, 4180.0), 20.0);
+}
+
+// rho(p) inverts p(rho) to 1e-12 over densities 0.95-1.05 rho0, and pressures below -p0 give 0.
+TEST(ThermalEos, TaitDensityInvertsItsPressure) {
+  const Tait liquid(1000.0, 20.0, 7.0);
+  for (const double rho : {950.0, 990.0, 1000.0, 1010.0, 1050.0})
+    EXPECT_NEAR(liquid.density(liquid.pressure(rho, 0.0)), rho, 1e-12 * rho);
+  EXPECT_EQ(liquid.density(-1000.0 * 400.0 / 7.0 - 1.0), 0.0);
 }
 
 TEST(ThermalEos, IdealGasAdiabaticSoundSpeedIsSqrtGammaRTOverM) {

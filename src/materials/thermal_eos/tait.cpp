@@ -1,5 +1,6 @@
 #include "materials/thermal_eos/tait.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace partimix::materials {
@@ -9,9 +10,17 @@ Tait::Tait(double reference_density, double sound_speed, double gamma)
       sound_speed_squared_(sound_speed * sound_speed),
       gamma_(gamma) {}
 
+double Tait::reference_pressure() const {
+  return reference_density_ * sound_speed_squared_ / gamma_;
+}
+
 double Tait::pressure(double density, double /*temperature*/) const {
-  const double reference_pressure = reference_density_ * sound_speed_squared_ / gamma_;
-  return reference_pressure * (std::pow(density / reference_density_, gamma_) - 1.0);
+  return reference_pressure() * (std::pow(density / reference_density_, gamma_) - 1.0);
+}
+
+double Tait::density(double pressure) const {
+  return reference_density_ *
+         std::pow(std::max(1.0 + pressure / reference_pressure(), 0.0), 1.0 / gamma_);
 }
 
 double Tait::pressure_density_derivative(double density, double /*temperature*/) const {

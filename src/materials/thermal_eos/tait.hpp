@@ -14,8 +14,12 @@ class Tait final : public ThermalEquationOfState {
   double pressure_density_derivative(double density, double temperature) const override;
   // 0: the liquid's pressure does not depend on temperature.
   double pressure_temperature_derivative(double density, double temperature) const override;
+  // The inverse, rho(p); pressures below -p0 (which no density reaches) give 0.
+  double density(double pressure) const;
 
  private:
+  double reference_pressure() const;  // p0 = rho0 c0^2 / gamma
+
   double reference_density_;
   double sound_speed_squared_;
   double gamma_;

@@ -1,31 +1,22 @@
 #pragma once
 // Tait equation of state (Monaghan 1994, eq. 3.4): p = B ((rho/rho0)^gamma - 1),
-// B = c0^2 rho0 / gamma, so that dp/drho = c0^2 at rho0.
-#include <algorithm>
-#include <cmath>
-
+// B = c0^2 rho0 / gamma, so that dp/drho = c0^2 at rho0; pressures below -B (which no density
+// reaches) map to the smallest density, 0.
+#include "materials/thermal_eos/tait.hpp"
 #include "sph/equation_of_state.hpp"
 
 namespace partimix::sph {
 
+// The shared law (materials/thermal_eos/tait.hpp) at the one temperature SPH's single fluid has.
 class TaitEos final : public EquationOfState {
  public:
   TaitEos(double reference_density, double sound_speed, double gamma)
-      : rho0_(reference_density),
-        gamma_(gamma),
-        b_(sound_speed * sound_speed * reference_density / gamma) {}
-  double pressure(double density) const override {
-    return b_ * (std::pow(density / rho0_, gamma_) - 1.0);
-  }
-  // Pressures below -B (which no density reaches) map to the smallest density, 0.
-  double density(double pressure) const override {
-    return rho0_ * std::pow(std::max(1.0 + pressure / b_, 0.0), 1.0 / gamma_);
-  }
+      : law_(reference_density, sound_speed, gamma) {}
+  double pressure(double density) const override { return law_.pressure(density, 0.0); }
+  double density(double pressure) const override { return law_.density(pressure); }
 
  private:
-  double rho0_;
-  double gamma_;
-  double b_;
+  materials::Tait law_;
 };
 
 }  // namespace partimix::sph
