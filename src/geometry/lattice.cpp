@@ -177,12 +177,14 @@ std::vector<Vec3> sample(const LatticeBox& box, double spacing, const LatticeOpt
 
 }  // namespace
 
+bool fills(const Shape& shape, const Vec3& x, const Domain& domain) {
+  return shape.signed_distance(probe_point(x, shape, domain)) < 0.0;
+}
+
 std::vector<Vec3> fill(const Shape& shape, double spacing, const Domain& domain,
                        const LatticeOptions& options) {
   const LatticeBox box = lattice_box(shape, spacing, 0.0, domain);
-  return sample(box, spacing, options, [&](const Vec3& x) {
-    return shape.signed_distance(probe_point(x, shape, domain)) < 0.0;
-  });
+  return sample(box, spacing, options, [&](const Vec3& x) { return fills(shape, x, domain); });
 }
 
 std::vector<Vec3> wall_layers(const Shape& shape, double spacing, int layers,

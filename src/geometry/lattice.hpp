@@ -39,6 +39,10 @@ struct LatticeOptions {
   double points = 1.0e9;
 };
 
+// Whether fill() takes the lattice point x of the shape: its signed distance is < 0, probed
+// along periodic axes at the shape's middle.
+bool fills(const Shape& shape, const Vec3& x, const Domain& domain);
+
 // Points strictly inside the shape (signed distance < 0). Along periodic axes of the domain
 // the lattice spans the whole period.
 std::vector<Vec3> fill(const Shape& shape, double spacing, const Domain& domain,

@@ -5,14 +5,17 @@
 #include <string>
 
 #include "core/vec.hpp"
+#include "sph/multi_material/material_spec.hpp"
 
 namespace partimix::sph {
 
 struct TimeStepFactors {
-  double cfl = 0.2;        // dt <= cfl * h / (c0 + |u|max)
-  double flow_cfl = 0.1;   // incompressible: dt <= flow_cfl * h / U
-  double viscous = 0.125;  // dt <= viscous * h^2 / nu
-  double force = 0.25;     // dt <= force * sqrt(h / |a|max)
+  double cfl = 0.2;         // dt <= cfl * h / (c0 + |u|max)
+  double flow_cfl = 0.1;    // incompressible: dt <= flow_cfl * h / U
+  double viscous = 0.125;   // dt <= viscous * h^2 / nu
+  double force = 0.25;      // dt <= force * sqrt(h / |a|max)
+  double conductive = 0.1;  // multi_material: dt <= conductive * rho c_v h^2 / k
+  double capillary = 0.25;  // multi_material: dt <= capillary * sqrt(rho h^3 / (2 pi sigma))
 };
 
 struct DensityTreatment {
@@ -29,9 +32,9 @@ struct Shifting {
 };
 
 struct Config {
-  std::string scheme = "weakly_compressible";      // | incompressible (docs/sph.md)
-  double pressure_tolerance = 1e-6;                // incompressible: relative residual of the solve
-  int pressure_iterations = 1000;                  // incompressible: BiCGSTAB iterations at most
+  std::string scheme = "weakly_compressible";  // | incompressible (docs/sph.md) | multi_material
+  double pressure_tolerance = 1e-6;            // incompressible: relative residual of the solve
+  int pressure_iterations = 1000;              // incompressible: BiCGSTAB iterations at most
   std::string viscosity_integration = "explicit";  // | implicit (incompressible only)
   int viscosity_iterations = 10;                   // implicit: Picard iterations at most
   double spacing = 0.0;                            // initial particle spacing dp [m]
@@ -59,6 +62,8 @@ struct Config {
   // sph.lattice: particles on rings about this point's z-parallel axis (geometry/lattice.hpp);
   // absent: the Cartesian lattice.
   std::optional<Vec3> polar_centre;
+  // scheme: multi_material (docs/multi-material-sph.md): its materials and settings.
+  MultiMaterialSettings multi_material;
 
   double smoothing_length() const { return smoothing_ratio * spacing; }
 };

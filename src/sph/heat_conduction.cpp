@@ -1,5 +1,6 @@
 #include "sph/heat_conduction.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace partimix::sph {
@@ -19,8 +20,8 @@ double pair_conductivity(double ki, double kj) {
 }  // namespace
 
 void add_conduction_rates(const ThermalParticles& p, std::size_t count, const CellGrid& grid,
-                          const KernelTable& kernel, double h, std::span<double> energy_rate) {
-  const double softening = kSoftening * h * h;
+                          const ScaledKernel& kernel, std::span<double> energy_rate) {
+  const double support = kernel.support();
   const auto n = static_cast<std::ptrdiff_t>(count);
 #pragma omp parallel for schedule(dynamic, 512)
   for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
@@ -29,11 +30,14 @@ void add_conduction_rates(const ThermalParticles& p, std::size_t count, const Ce
     grid.for_each_neighbour(
         i, p.position,
         [&](std::size_t j, const Vec3&, double r2) {
-          if (j == i)
+          const double reach = support * std::max(p.h[i], p.h[j]);
+          if (j == i || r2 >= reach * reach)
             return;
           const double r = std::sqrt(r2);
+          const double h = 0.5 * (p.h[i] + p.h[j]);
           // r_ij . grad_i W_ij = r dW/dr.
-          const double flux = r * kernel.derivative(r) / (r2 + softening);
+          const double slope = 0.5 * (kernel.derivative(r, p.h[i]) + kernel.derivative(r, p.h[j]));
+          const double flux = r * slope / (r2 + kSoftening * h * h);
           rate += p.mass[j] / (p.density[i] * p.density[j]) *
                   pair_conductivity(p.conductivity[i], p.conductivity[j]) *
                   (p.temperature[i] - p.temperature[j]) * flux;

@@ -69,7 +69,8 @@ std::vector<Vec3> located(const io::Case& the_case, const std::string& key, Samp
   }
 }
 
-// The fluid lattice points of region `r`, less those that the solid bodies block.
+// The fluid lattice points of region `r`, less those that the solid bodies block and those an
+// earlier region holds (a point inside several regions is laid once, by the first).
 std::vector<Vec3> fluid_points(const io::Case& the_case, const Config& config,
                                const FluidSpec& fluid, std::size_t r, std::size_t existing,
                                const BodyClearance& clearance) {
@@ -85,7 +86,14 @@ std::vector<Vec3> fluid_points(const io::Case& the_case, const Config& config,
                                      "region within the domain",
                                      spacing));
   }
-  std::erase_if(points, [&](const Vec3& x) { return clearance.blocks(x); });
+  std::erase_if(points, [&](const Vec3& x) {
+    return clearance.blocks(x) ||
+           std::any_of(fluid.regions.begin(),
+                       fluid.regions.begin() + static_cast<std::ptrdiff_t>(r),
+                       [&](const FluidRegion& earlier) {
+                         return geometry::fills(*earlier.shape, x, the_case.domain);
+                       });
+  });
   return points;
 }
 
@@ -203,12 +211,16 @@ void generate_particles(const io::Case& the_case, const SphSection& section,
     clearance.add_body(*the_case.walls[w].shape, bodies[w]);
     pending += bodies[w].size();
   }
+  std::vector<std::int32_t> material;
   for (std::size_t r = 0; r < section.fluid.regions.size(); ++r) {
     append(
         store,
         fluid_points(the_case, section.config, section.fluid, r, store.size() + pending, clearance),
         ParticleKind::fluid);
+    material.resize(store.size(), section.fluid.regions[r].material);
   }
+  if (section.config.scheme == "multi_material")
+    store.add_integer("material", "").values = std::move(material);
   instance.bodies = std::make_unique<geometry::MovingBodies>(store, the_case.domain);
   std::vector<std::int32_t>& solid = store.add_integer("solid", "", false).values;
   store.add_scalar("surface_depth", "m", false);

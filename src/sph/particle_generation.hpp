@@ -18,7 +18,9 @@ namespace partimix::sph {
 int wall_layers_for(const Config& config);
 
 // Fills the instance's store (empty) with the fluid and then the wall particles of the case
-// (ids in creation order), tags the tracer fluid, and makes its bodies (one per wall). Adds to
+// (ids in creation order), tags the tracer fluid, and makes its bodies (one per wall). With
+// sph.scheme: multi_material, the integer field "material" holds each particle's region's
+// material. Adds to
 // its warnings what the case should hear, and to its load caveats the bodies thinner than the
 // kernel support. Throws InputError naming the case key when the case cannot be built.
 void generate_particles(const io::Case& the_case, const SphSection& section,

@@ -1,12 +1,44 @@
 #include "sph/sph_method.hpp"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "sph/free_surface.hpp"
+#include "sph/multi_material/multi_material_solver.hpp"
 #include "sph/particle_generation.hpp"
 #include "sph/sph_solver.hpp"
 
 namespace partimix::sph {
+namespace {
+
+// The multi-material scheme (docs/multi-material-sph.md): the regions' particles, each of its
+// region's material with the mass rho0 dp^d of the material's initial density; no walls yet.
+io::MethodInstance build_multi_material(const io::Case& the_case, const SphSection& section) {
+  if (!the_case.walls.empty()) {
+    throw io::case_error(the_case, "walls",
+                         "sph.scheme: multi_material has no walls yet; a droplet or a periodic "
+                         "box needs none");
+  }
+  io::MethodInstance instance;
+  instance.store = std::make_unique<ParticleStore>();
+  generate_particles(the_case, section, instance);
+  ParticleStore& store = *instance.store;
+  try {
+    const std::vector<Material> materials = build_materials(section.config.multi_material);
+    const std::vector<std::int32_t>& material = store.find_integer("material")->values;
+    const double volume = std::pow(section.config.spacing, the_case.domain.dimensions);
+    for (std::size_t i = 0; i < store.size(); ++i)
+      store.mass()[i] = materials[static_cast<std::size_t>(material[i])].initial_density() * volume;
+    instance.solver = std::make_unique<MultiMaterialSolver>(store, the_case.domain, section.config,
+                                                            the_case.gravity);
+  } catch (const InputError& error) {
+    throw io::case_error(the_case, error.location().key_path, error.message());
+  }
+  return instance;
+}
+
+}  // namespace
 
 std::shared_ptr<io::MethodSection> SphMethod::read(io::Reader& root,
                                                    const io::Case& the_case) const {
@@ -18,6 +50,8 @@ std::shared_ptr<io::MethodSection> SphMethod::read(io::Reader& root,
 io::MethodInstance SphMethod::build(const io::Case& the_case, const io::MethodSpec& spec,
                                     const io::BuildOptions& /*options*/) const {
   const auto& section = dynamic_cast<const SphSection&>(*spec.section);
+  if (section.config.scheme == "multi_material")
+    return build_multi_material(the_case, section);
   io::MethodInstance instance;
   instance.store = std::make_unique<ParticleStore>();
   generate_particles(the_case, section, instance);

@@ -2,8 +2,11 @@
 
 #include <filesystem>
 
+#include <fmt/format.h>
+
 #include "io/rheology_section.hpp"
 #include "io/shape_section.hpp"
+#include "sph/multi_material/materials_section.hpp"
 
 namespace partimix::sph {
 namespace {
@@ -14,6 +17,7 @@ using io::kPositive;
 using io::Reader;
 
 const std::vector<std::string> kKernels{"cubic_spline", "hyperbolic", "wendland_c2"};
+const std::string kMultiMaterial = "multi_material";
 
 DensityTreatment read_density(Reader& sph_section) {
   Reader section = sph_section.optional_map("density");
@@ -44,6 +48,8 @@ TimeStepFactors read_time_step(Reader& sph_section) {
   factors.flow_cfl = section.optional<double>("flow_cfl", factors.flow_cfl, kPositive);
   factors.viscous = section.optional<double>("viscous", factors.viscous, kPositive);
   factors.force = section.optional<double>("force", factors.force, kPositive);
+  factors.conductive = section.optional<double>("conductive", factors.conductive, kPositive);
+  factors.capillary = section.optional<double>("capillary", factors.capillary, kPositive);
   section.done();
   return factors;
 }
@@ -68,6 +74,20 @@ std::optional<Vec3> read_polar_centre(Reader& sph, const Domain& domain) {
   if (domain.periodic[0] || domain.periodic[1])
     throw sph.error("lattice", "a polar lattice cannot repeat along a periodic x or y axis");
   return centre;
+}
+
+// `materials` and `multi_material` belong to scheme: multi_material alone.
+MultiMaterialSettings read_scheme_materials(Reader& sph, const std::string& scheme) {
+  if (scheme == kMultiMaterial) {
+    return read_multi_material(sph);
+  }
+  for (const std::string key : {"materials", "multi_material"}) {
+    if (sph.contains(key)) {
+      throw sph.error(key,
+                      fmt::format("only with scheme: multi_material (the scheme is {})", scheme));
+    }
+  }
+  return {};
 }
 
 Config read_config(Reader& root, const Domain& domain) {
@@ -104,8 +124,8 @@ Config read_config(Reader& root, const Domain& domain) {
   config.time_step = read_time_step(section);
   config.sort_interval = section.optional<int>("sort_interval", config.sort_interval, at_least(1));
   config.polar_centre = read_polar_centre(section, domain);
-  config.scheme =
-      section.choice("scheme", config.scheme, {"weakly_compressible", "incompressible"});
+  config.scheme = section.choice("scheme", config.scheme,
+                                 {"weakly_compressible", "incompressible", kMultiMaterial});
   config.pressure_tolerance =
       section.optional<double>("pressure_tolerance", config.pressure_tolerance, kPositive);
   config.pressure_iterations =
@@ -114,6 +134,7 @@ Config read_config(Reader& root, const Domain& domain) {
       "viscosity_integration", config.viscosity_integration, {"explicit", "implicit"});
   config.viscosity_iterations =
       section.optional<int>("viscosity_iterations", config.viscosity_iterations, at_least(1));
+  config.multi_material = read_scheme_materials(section, config.scheme);
   section.done();
   return config;
 }
@@ -131,13 +152,43 @@ std::optional<TracerPlane> read_tracer(Reader& fluid, int dimensions) {
   return tracer;
 }
 
-FluidSpec read_fluid(Reader& root, int dimensions, const std::filesystem::path& folder) {
+// With scheme: multi_material each material has its own density and viscosity, so the fluid
+// has none.
+void reject_fluid_properties(const Reader& fluid) {
+  for (const std::string key : {"density", "viscosity", "rheology"}) {
+    if (fluid.contains(key)) {
+      throw fluid.error(key,
+                        "not with sph.scheme: multi_material, where each of sph.materials "
+                        "has its own density and viscosity");
+    }
+  }
+}
+
+// The index in sph.materials of the region's `material`, which only scheme: multi_material has.
+int read_material_index(Reader& region, const Config& config) {
+  if (config.scheme == kMultiMaterial) {
+    return read_region_material(region, config.multi_material.materials);
+  }
+  if (region.contains("material")) {
+    throw region.error(
+        "material", "only with sph.scheme: multi_material (the scheme is " + config.scheme + ")");
+  }
+  return -1;
+}
+
+FluidSpec read_fluid(Reader& root, const Config& config, int dimensions,
+                     const std::filesystem::path& folder) {
   Reader section = root.map("fluid");
   FluidSpec fluid;
-  fluid.density = section.required<double>("density", kPositive);
-  fluid.rheology = io::read_fluid_rheology(section);
+  if (config.scheme == kMultiMaterial) {
+    reject_fluid_properties(section);
+  } else {
+    fluid.density = section.required<double>("density", kPositive);
+    fluid.rheology = io::read_fluid_rheology(section);
+  }
   for (Reader& region : section.list("regions")) {
-    fluid.regions.push_back({io::read_shape(region, dimensions, folder)});
+    fluid.regions.push_back(
+        {io::read_shape(region, dimensions, folder), read_material_index(region, config)});
     region.done();
   }
   fluid.tracer = read_tracer(section, dimensions);
@@ -162,7 +213,7 @@ std::shared_ptr<SphSection> read_sph_section(Reader& root, const io::Case& the_c
   auto section = std::make_shared<SphSection>();
   section->config = read_config(root, the_case.domain);
   const std::filesystem::path folder = std::filesystem::path(the_case.file).parent_path();
-  section->fluid = read_fluid(root, the_case.domain.dimensions, folder);
+  section->fluid = read_fluid(root, section->config, the_case.domain.dimensions, folder);
   return section;
 }
 

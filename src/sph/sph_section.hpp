@@ -15,6 +15,8 @@ namespace partimix::sph {
 
 struct FluidRegion {
   std::shared_ptr<const geometry::Shape> shape;
+  // scheme: multi_material: the index in sph.materials of the region's material; -1 otherwise.
+  int material = -1;
 };
 
 // The tracer of the mixing analyses: the fluid on the side of a plane the normal points to, at
@@ -37,7 +39,10 @@ class SphSection final : public io::MethodSection {
   FluidSpec fluid;
 
   bool has_tracer() const override { return fluid.tracer.has_value(); }
+  // None for the multi-material scheme, whose materials have no one density and viscosity.
   std::optional<materials::FlowScales> flow_scales() const override {
+    if (config.scheme == "multi_material")
+      return std::nullopt;
     return materials::flow_scales(fluid.density, fluid.rheology);
   }
 };

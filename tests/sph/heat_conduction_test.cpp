@@ -14,7 +14,7 @@
 #include "particles/cell_grid.hpp"
 #include "sph/heat_conduction.hpp"
 #include "sph/kernel.hpp"
-#include "sph/kernel_table.hpp"
+#include "sph/scaled_kernel.hpp"
 
 namespace partimix::sph {
 namespace {
@@ -65,15 +65,16 @@ class TwoBodies : public ::testing::Test {
   double conduct(double dt, int steps) {
     const double h = 1.5 * kSpacing;
     const std::unique_ptr<Kernel> kernel = kernel_registry().create("wendland_c2");
-    const KernelTable table(*kernel, h, 2);
-    CellGrid grid(domain, table.support_radius());
+    const ScaledKernel scaled(*kernel, 2);
+    CellGrid grid(domain, scaled.support() * h);
     grid.build(position);
     std::vector<double> rate(position.size());
-    const ThermalParticles particles{position, mass, density, temperature, conductivity};
+    const std::vector<double> lengths(position.size(), h);
+    const ThermalParticles particles{position, lengths, mass, density, temperature, conductivity};
     const double before = energy();
     for (int step = 0; step < steps; ++step) {
       std::fill(rate.begin(), rate.end(), 0.0);
-      add_conduction_rates(particles, position.size(), grid, table, h, rate);
+      add_conduction_rates(particles, position.size(), grid, scaled, rate);
       for (std::size_t i = 0; i < position.size(); ++i)
         temperature[i] += dt * rate[i] / specific_heat[i];
     }
