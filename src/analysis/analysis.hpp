@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "analysis/bed_options.hpp"
+#include "analysis/droplet_options.hpp"
 #include "analysis/drum_measures.hpp"
 #include "analysis/sampling_cells.hpp"
 #include "core/registry.hpp"
@@ -94,11 +95,12 @@ struct AnalysisOptions {
   HeightLine height;                 // height_profile
   OrientationReference orientation;  // orientation_order
   DrumMeasures drum_measures;        // drum_segregation, drum_discharge
+  DropletOptions droplet;            // droplet
 };
 
 // Analyses a case file may ask for, by name: front_position, body_loads, power_number, mixing,
 // packing_fraction, velocity_profile, angle_of_repose, mass_in_region, height_profile,
-// orientation_order, drum_segregation, drum_discharge.
+// orientation_order, drum_segregation, drum_discharge, droplet.
 // (Kinetic energy and the largest speed are always sampled.)
 const Registry<Analysis, const AnalysisOptions&>& analysis_registry();
 

@@ -1,6 +1,7 @@
 #include "analysis/analysis.hpp"
 #include "analysis/angle_of_repose.hpp"
 #include "analysis/body_loads.hpp"
+#include "analysis/droplet.hpp"
 #include "analysis/drum_discharge.hpp"
 #include "analysis/drum_segregation.hpp"
 #include "analysis/front_position.hpp"
@@ -45,6 +46,7 @@ const Registry<Analysis, const AnalysisOptions&>& analysis_registry() {
     r.add("drum_discharge", [](const AnalysisOptions& o) {
       return std::make_unique<DrumDischarge>(o.drum_measures);
     });
+    r.add("droplet", [](const AnalysisOptions& o) { return std::make_unique<Droplet>(o.droplet); });
     return r;
   }();
   return registry;

@@ -31,6 +31,7 @@ analysis::AnalysisOptions options_of(const io::AnalysisSpec& spec, const io::Cas
   options.height = spec.height;
   options.orientation = spec.orientation;
   options.drum_measures = spec.drum_measures;
+  options.droplet = spec.droplet;
   if (spec.type == "body_loads" || spec.type == "power_number") {
     if (bodies == nullptr || static_cast<std::size_t>(spec.body) >= bodies->count()) {
       throw InputError(the_case.locate(spec.key + ".body"),

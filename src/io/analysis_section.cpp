@@ -20,9 +20,10 @@ namespace {
 const std::vector<std::string> kTypes{
     "front_position",    "body_loads",       "power_number",   "mixing",         "packing_fraction",
     "velocity_profile",  "angle_of_repose",  "mass_in_region", "height_profile", "mass_flux",
-    "orientation_order", "drum_segregation", "drum_discharge"};
+    "orientation_order", "drum_segregation", "drum_discharge", "droplet"};
 
-constexpr int kMostBins = 1000;  // of a profile: one series.csv column each
+constexpr int kMostBins = 1000;        // of a profile: one series.csv column each
+constexpr double kLinkSpacings = 1.5;  // droplet: the default link distance in sph.spacing
 
 // The corners `min` and `max` of an axis-aligned box, max > min along every axis.
 void read_box(Reader& reader, int dimensions, Vec3& lo, Vec3& hi) {
@@ -286,6 +287,35 @@ void read_orientation_order(Reader& item, AnalysisSpec& analysis, int dimensions
   reference.direction.normalize();
 }
 
+// droplet: `shell` and `gas`, names from sph.materials (the shell's not among the gases), and
+// `link` (1.5 sph.spacing by default). Refused for a method without materials (an SPH scheme
+// other than multi_material, or another method).
+void read_droplet(Reader& item, AnalysisSpec& analysis, const Case& the_case,
+                  const MethodSection& section) {
+  const std::vector<std::string> names = section.material_names();
+  if (names.empty()) {
+    throw item.error("type", fmt::format("the droplet analysis needs sph.scheme: multi_material, "
+                                         "whose sph.materials name the shell and the gas; "
+                                         "method {} has no materials",
+                                         analysis.method));
+  }
+  const auto index_of = [&names](const std::string& name) {
+    return static_cast<int>(std::ranges::find(names, name) - names.begin());
+  };
+  analysis::DropletOptions& droplet = analysis.droplet;
+  droplet.shell = index_of(item.required_choice("shell", names));
+  droplet.gas.clear();
+  for (const std::string& gas : item.required_choices("gas", names)) {
+    if (index_of(gas) == droplet.shell)
+      throw item.error("gas", fmt::format("'{}' is the shell's material, not a gas", gas));
+    droplet.gas.push_back(index_of(gas));
+  }
+  const std::optional<double> spacing = section.spacing();
+  droplet.link = spacing ? item.optional<double>("link", kLinkSpacings * *spacing, kPositive)
+                         : item.required<double>("link", kPositive);
+  droplet.dimensions = the_case.domain.dimensions;
+}
+
 // The method whose particles the analysis measures: `method`, by default the first of the case.
 const MethodSection& read_method(Reader& item, AnalysisSpec& analysis, const Case& the_case) {
   std::vector<std::string> names;
@@ -364,6 +394,8 @@ void read_type_keys(Reader& item, AnalysisSpec& analysis, const Case& the_case,
     read_orientation_order(item, analysis, dimensions, section);
   if (analysis.type == "drum_segregation" || analysis.type == "drum_discharge")
     read_drum_measures(item, analysis, the_case);
+  if (analysis.type == "droplet")
+    read_droplet(item, analysis, the_case, section);
 }
 
 }  // namespace

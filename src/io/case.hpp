@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/bed_options.hpp"
+#include "analysis/droplet_options.hpp"
 #include "analysis/drum_measures.hpp"
 #include "analysis/sampling_cells.hpp"
 #include "core/error.hpp"
@@ -77,7 +78,8 @@ struct OutputSpec {
 // (docs/power.md). mixing: uniformity and Lacey indices of the tracer (docs/mixing.md).
 // packing_fraction, velocity_profile, angle_of_repose, mass_in_region, height_profile,
 // orientation_order: measurements of a granular bed (docs/mixing.md, "Measurements of a
-// granular bed").
+// granular bed"). droplet: the droplet of the multi-material SPH scheme
+// (docs/multi-material-sph.md, "The scheme").
 struct AnalysisSpec {
   std::string type;
   std::string key;   // where it is in the case: "analyses[i]"
@@ -103,6 +105,7 @@ struct AnalysisSpec {
   analysis::HeightLine height;                 // height_profile
   analysis::OrientationReference orientation;  // orientation_order
   analysis::DrumMeasures drum_measures;        // drum_segregation, drum_discharge
+  analysis::DropletOptions droplet;            // droplet
 };
 
 // What a method read from its own sections of the case file. Each method derives its own type;
@@ -117,6 +120,13 @@ class MethodSection {
   // Whether some grains have an axis, for the orientation order (superquadric grains whose
   // half-axes are not all equal; docs/mixing.md, "Orientation order").
   virtual bool has_grain_axes() const { return false; }
+  // The names of the materials, in the order of the index each particle's field `material`
+  // holds, for the droplet analysis (sph.materials of sph.scheme: multi_material); empty for a
+  // method without them.
+  virtual std::vector<std::string> material_names() const { return {}; }
+  // The initial particle spacing [m] of a method that lays its particles on a lattice
+  // (sph.spacing), for the droplet analysis' default link distance.
+  virtual std::optional<double> spacing() const { return std::nullopt; }
 };
 
 // One method of the case: its name in the method registry, its sections, and how many steps it

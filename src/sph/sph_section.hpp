@@ -3,6 +3,7 @@
 // settings, and the fluid's properties, the regions it starts in and its tracer.
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "geometry/shape.hpp"
@@ -45,6 +46,16 @@ class SphSection final : public io::MethodSection {
       return std::nullopt;
     return materials::flow_scales(fluid.density, fluid.rheology);
   }
+  // sph.materials' names with the multi-material scheme; none otherwise.
+  std::vector<std::string> material_names() const override {
+    std::vector<std::string> names;
+    if (config.scheme == "multi_material") {
+      for (const MaterialSpec& material : config.multi_material.materials)
+        names.push_back(material.name);
+    }
+    return names;
+  }
+  std::optional<double> spacing() const override { return config.spacing; }
 };
 
 // Reads `sph` and `fluid` from the root of a case file.

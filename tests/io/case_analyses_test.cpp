@@ -1,4 +1,4 @@
-// The analyses body_loads, power_number and mixing and the key fluid.tracer
+// The analyses body_loads, power_number, mixing and droplet and the key fluid.tracer
 // (docs/case-reference.md, "fluid" and "analyses"): they load with their values and defaults
 // (recorded in the resolved case), and bad ones are InputErrors naming file, line, column and
 // key path.
@@ -8,8 +8,10 @@
 #include <cmath>
 
 #include <string>
+#include <vector>
 
 #include "case_files.hpp"
+#include "support/multi_material_case.hpp"
 #include "support/sph_case.hpp"
 
 namespace partimix::case_test {
@@ -372,6 +374,57 @@ TEST(CaseAnalyses, TwoAnalysesOfOneNameAreRefused) {
                                   "front_position, axis: y, name: f}\n"));
   EXPECT_EQ(error.location().key_path, "analyses[1].name");
   EXPECT_THAT(error.message(), HasSubstr("analyses[0] has this name already"));
+}
+
+// A 2D droplet of the multi-material scheme (spacing 0.01 m): materials fuel 0, shell 1,
+// vapour 2 and air 3, with the analyses list `items`.
+std::string droplet_case(const std::string& items) {
+  std::string materials;
+  for (const char* name : {"fuel", "shell", "vapour", "air"}) {
+    materials += std::string("    - name: ") + name +
+                 "\n      eos: {model: tait, reference_density: 800, sound_speed: 50}\n"
+                 "      specific_heat: 2000\n";
+  }
+  return test_support::multi_material_case(materials,
+                                           test_support::region_with("      material: fuel\n")) +
+         "analyses:\n" + items;
+}
+TEST(CaseAnalyses, DropletNamesItsMaterialsByIndexAndLinksOneAndAHalfSpacings) {
+  const io::Case loaded =
+      load_text(droplet_case("  - {type: droplet, shell: shell, gas: [air, vapour]}\n"));
+  const analysis::DropletOptions& droplet = only_analysis(loaded).droplet;
+  EXPECT_EQ(droplet.shell, 1);
+  EXPECT_EQ(droplet.gas, (std::vector<int>{3, 2}));
+  EXPECT_DOUBLE_EQ(droplet.link, 0.015);
+  EXPECT_EQ(droplet.dimensions, 2);
+  EXPECT_DOUBLE_EQ(loaded.resolved.at("analyses")[0].at("link"), 0.015);
+  const io::Case one_gas =
+      load_text(droplet_case("  - {type: droplet, shell: shell, gas: vapour, link: 0.02}\n"));
+  EXPECT_EQ(only_analysis(one_gas).droplet.gas, (std::vector<int>{2}));
+  EXPECT_DOUBLE_EQ(only_analysis(one_gas).droplet.link, 0.02);
+}
+
+TEST(CaseAnalyses, DropletShellMustBeAMaterial) {
+  const int line = static_cast<int>(lines_of(droplet_case("")).size()) + 1;
+  const InputError error =
+      load_error(droplet_case("  - type: droplet\n    shell: gel\n    gas: vapour\n"));
+  expect_location(error, "case.yaml", line + 1, 12, "analyses[0].shell");
+  EXPECT_THAT(error.message(), HasSubstr("unknown value 'gel'; expected one of: fuel, shell"));
+}
+
+TEST(CaseAnalyses, DropletGasMustNotBeTheShell) {
+  const InputError error =
+      load_error(droplet_case("  - type: droplet\n    shell: shell\n    gas: [vapour, shell]\n"));
+  EXPECT_EQ(error.location().key_path, "analyses[0].gas") << error.what();
+  EXPECT_THAT(error.message(), HasSubstr("'shell' is the shell's material"));
+}
+
+TEST(CaseAnalyses, DropletNeedsTheMultiMaterialScheme) {
+  const int line = first_item_line();
+  const InputError error =
+      load_error(with_analyses("  - type: droplet\n    shell: shell\n    gas: vapour\n"));
+  expect_location(error, "case.yaml", line, 11, "analyses[0].type");
+  EXPECT_THAT(error.message(), HasSubstr("needs sph.scheme: multi_material"));
 }
 
 }  // namespace

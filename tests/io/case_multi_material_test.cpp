@@ -7,11 +7,14 @@
 #include <limits>
 
 #include "case_files.hpp"
+#include "support/multi_material_case.hpp"
 #include "support/sph_case.hpp"
 
 namespace partimix::case_test {
 namespace {
 
+using test_support::multi_material_case;
+using test_support::region_with;
 using ::testing::HasSubstr;
 
 const std::string kThreeMaterials = R"(solver: sph
@@ -92,32 +95,6 @@ const std::string kLiquid = R"(    - name: liquid
       eos: {model: tait, reference_density: 800, sound_speed: 50}
       specific_heat: 2000
 )";
-
-// A region of the fluid section with the keys `extra` (lines indented as the region's keys).
-std::string region_with(const std::string& extra) {
-  return "  regions:\n    - shape: box\n      min: [0, 0]\n      max: [0.5, 0.5]\n" + extra;
-}
-
-// A 2D case with scheme: multi_material, the items `materials` of sph.materials and the fluid
-// section's keys `fluid` (by default one region of `liquid`).
-std::string multi_material_case(
-    const std::string& materials,
-    const std::string& fluid = region_with("      material: liquid\n")) {
-  return R"(solver: sph
-dimensions: 2
-domain:
-  min: [0, 0]
-  max: [1.0, 1.0]
-time:
-  end: 1.0e-3
-  output_interval: 1.0e-4
-sph:
-  spacing: 0.01
-  scheme: multi_material
-  materials:
-)" + materials +
-         "fluid:\n" + fluid;
-}
 
 // A material named `name` of specific heat 1000 with the keys `keys` (lines indented as its keys).
 std::string material(const std::string& name, const std::string& keys) {

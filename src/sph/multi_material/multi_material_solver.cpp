@@ -248,8 +248,9 @@ void MultiMaterialSolver::add_surface_tension() {
 }
 
 // c_v dT/dt = T (dp/dT)_rho epsilon + heating + conduction + q / rho + the ambient's heat
-// (docs/multi-material-sph.md, "The scheme"); drho/dt = rho^2 epsilon with the continuity
-// pairing.
+// h (T_a - T) 2 |g| / rho, 2 |g| the surface per unit volume (the particles hold only the inner
+// half of the colour's step from 1 to 0) (docs/multi-material-sph.md, "The scheme");
+// drho/dt = rho^2 epsilon with the continuity pairing.
 void MultiMaterialSolver::update_temperature_rates() {
   const std::size_t n = store_.size();
   std::fill(conduction_.begin(), conduction_.end(), 0.0);
@@ -266,7 +267,7 @@ void MultiMaterialSolver::update_temperature_rates() {
     const double work =
         t * material_of(i).eos().pressure_temperature_derivative(rho, t) * expansion_[i];
     const double surface_heat = ambient.heat_transfer_coefficient * (ambient.temperature - t) *
-                                unity_gradient_[i].norm() / rho;
+                                2.0 * unity_gradient_[i].norm() / rho;
     temperature_rate_[i] =
         (work + heating_[i] + conduction_[i] + spec.heat_source / rho + surface_heat) /
         spec.specific_heat;
