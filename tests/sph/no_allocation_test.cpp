@@ -107,5 +107,14 @@ TEST(NoAllocation, IncompressibleStepsDoNotAllocate) {
   EXPECT_EQ(allocations_in_40_steps_after_warm_up(c), 0);
 }
 
+// The gel droplet of the multi-material scheme (docs/multi-material-sph.md): three materials,
+// surface tension, conduction and the shell's stress; its solid particles yield within the first
+// steps (the case's drive).
+TEST(NoAllocation, MultiMaterialStepsDoNotAllocate) {
+  const io::Case c = io::load_case(std::string(PARTIMIX_SOURCE_DIR) + "/cases/gel_droplet_2d.yaml",
+                                   {"sph.spacing=2.0e-5"});
+  EXPECT_EQ(allocations_in_40_steps_after_warm_up(c), 0);
+}
+
 }  // namespace
 }  // namespace partimix

@@ -11,16 +11,25 @@ namespace partimix::sph {
 SolidStepResult return_to_yield(const SolidSpec& solid, const Mat3& trial, double pressure,
                                 double temperature, double density, double dt, SolidPoint& point) {
   const materials::JohnsonCookParameters& jc = solid.johnson_cook;
-  const double intact = 1.0 - point.damage;
+  // The yield function's state, which its closure holds by one reference: small enough for
+  // std::function to keep without allocating.
+  struct YieldState {
+    const materials::JohnsonCookParameters& jc;
+    double intact;
+    double plastic_strain;
+    double temperature;
+    double dt;
+  } const state{jc, 1.0 - point.damage, point.plastic_strain, temperature, dt};
   const double r = point.plastic_strain;
-  // sigma_y(r + dr) (1 - D) at the rate dr / dt; its slope by a central difference in dr, as the
+  // sigma_y(r + dr) (1 - D) at the rate dr / dt; its slope by a forward difference in dr, as the
   // rate term's derivative at dr = 0 is unbounded.
-  auto yield = [&](double dr) {
-    const double rate = dr / dt;
-    const double stress = intact * materials::flow_stress(jc, r + dr, rate, temperature);
+  auto yield = [&state](double dr) {
+    const double stress = state.intact * materials::flow_stress(state.jc, state.plastic_strain + dr,
+                                                                dr / state.dt, state.temperature);
     const double step = std::max(1e-9, 1e-6 * dr);
     const double ahead =
-        intact * materials::flow_stress(jc, r + dr + step, (dr + step) / dt, temperature);
+        state.intact * materials::flow_stress(state.jc, state.plastic_strain + dr + step,
+                                              (dr + step) / state.dt, state.temperature);
     return materials::YieldPoint{stress, (ahead - stress) / step};
   };
   const materials::RadialReturnResult returned =
