@@ -52,6 +52,7 @@ void material_rates(const MaterialParticles& p, std::size_t count, const CellGri
   for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
     const auto i = static_cast<std::size_t>(ii);
     const Mat3 sigma_i = stress(p, i);
+    const bool i_stressed = !p.artificial_stress[i].isZero();
     const double own_weight = 1.0 / (p.omega[i] * p.density[i] * p.density[i]);
     PairSums sums;
     grid.for_each_neighbour(
@@ -80,10 +81,13 @@ void material_rates(const MaterialParticles& p, std::size_t count, const CellGri
             sums.expansion += mj * cross * vij.dot(grad);
           }
           const double pi = artificial_viscosity(p, i, j, rij, r2, h, av);
-          const double dp = 0.5 * (p.spacing[i] + p.spacing[j]);
-          const Mat3 repulsion = repulsion_weight(kernel, r, h, dp) *
-                                 (p.artificial_stress[i] + p.artificial_stress[j]);
-          sums.acceleration += mj * (repulsion * grad - pi * grad);
+          sums.acceleration -= mj * pi * grad;
+          // The artificial stress acts between solids only; fluids skip its two kernel lookups.
+          if (i_stressed || !p.artificial_stress[j].isZero()) {
+            const double dp = 0.5 * (p.spacing[i] + p.spacing[j]);
+            sums.acceleration += mj * repulsion_weight(kernel, r, h, dp) *
+                                 (p.artificial_stress[i] + p.artificial_stress[j]) * grad;
+          }
           sums.heating += 0.5 * mj * pi * vij.dot(grad);
           const double viscous =
               mj * (p.viscosity[i] + p.viscosity[j]) * cross * rij.dot(grad) / (r2 + 0.01 * h * h);

@@ -105,6 +105,8 @@ MultiMaterialSolver::MultiMaterialSolver(ParticleStore& store, const Domain& dom
     conductivity_[i] = material.spec().conductivity;
     largest_h = std::max(largest_h, h_[i]);
   }
+  conducts_ =
+      std::any_of(conductivity_.begin(), conductivity_.end(), [](double k) { return k > 0.0; });
   largest_h = std::max(largest_h, surface_table_.support_radius() / scaled_.support());
   widen_grid(largest_h);
   evaluate();
@@ -254,7 +256,7 @@ void MultiMaterialSolver::add_surface_tension() {
 void MultiMaterialSolver::update_temperature_rates() {
   const std::size_t n = store_.size();
   std::fill(conduction_.begin(), conduction_.end(), 0.0);
-  if (std::any_of(conductivity_.begin(), conductivity_.end(), [](double k) { return k > 0.0; })) {
+  if (conducts_) {
     add_conduction_rates(
         {store_.position(), h_, store_.mass(), density_, temperature_, conductivity_}, n, *grid_,
         scaled_, conduction_);

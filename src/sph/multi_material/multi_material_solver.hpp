@@ -103,6 +103,7 @@ class MultiMaterialSolver final : public Solver {
   std::vector<Vec3> unity_gradient_, colour_gradient_, normal_gradient_;
   HalfStep half_;
 
+  bool conducts_ = false;  // some material conducts heat
   double time_ = 0.0;
   std::size_t steps_ = 0;
   double stable_dt_ = 0.0;
