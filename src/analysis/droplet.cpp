@@ -76,6 +76,8 @@ Droplet::Droplet(const DropletOptions& options) : options_(options), rupture_tes
     throw std::invalid_argument("droplet: needs the shell's material");
   if (!(options.link > 0.0))
     throw std::invalid_argument("droplet: the link distance must be > 0");
+  if (!(options.after_rupture > 0.0))
+    throw std::invalid_argument("droplet: after_rupture must be > 0");
   if (options.dimensions != 2 && options.dimensions != 3)
     throw std::invalid_argument("droplet: dimensions must be 2 or 3");
 }
@@ -154,7 +156,7 @@ void Droplet::record(double time, std::span<const double> values) {
   ratio_max_ = std::fmax(ratio_max_, values[kDiameterRatio]);
   if (!rupture_ && values[kRuptured] == 1.0) {
     rupture_ = Rupture{time, values[kPressure]};
-    after_rupture_.emplace(time + kPressureAfterRupture);
+    after_rupture_.emplace(time + options_.after_rupture);
   }
   if (after_rupture_)
     after_rupture_->add(time, values[kPressure]);
@@ -169,7 +171,7 @@ void Droplet::add_figures(Figures& figures) const {
   if (std::isfinite(rupture_->pressure))
     figures.add("pressure_at_rupture", rupture_->pressure, "Pa");
   if (after_rupture_->reached() && std::isfinite(after_rupture_->value()))
-    figures.add("pressure_100ms_after_rupture", after_rupture_->value(), "Pa");
+    figures.add("pressure_after_rupture", after_rupture_->value(), "Pa");
 }
 
 std::optional<std::string> Droplet::rupture_caveat() const {
@@ -190,9 +192,9 @@ void Droplet::add_caveats(Caveats& caveats) const {
   if (const std::optional<std::string> reason = rupture_caveat())
     caveats["rupture_time"] = *reason;
   if (after_rupture_ && !after_rupture_->reached()) {
-    caveats["pressure_100ms_after_rupture"] = fmt::format(
+    caveats["pressure_after_rupture"] = fmt::format(
         "left out: the last sample (t = {:.4g} s) comes before rupture_time + {:g} s = {:.4g} s",
-        last_time_, kPressureAfterRupture, after_rupture_->target());
+        last_time_, options_.after_rupture, after_rupture_->target());
   }
 }
 

@@ -8,7 +8,7 @@
 // The shell's inner and outer surfaces are labelled at the first sample by each shell particle's
 // distance from the droplet's centroid, and kept by particle id. The summary: the largest D / D0,
 // the time of the first sample that finds the shell ruptured, the pressure then, and the pressure
-// at the sample nearest 0.1 s after it.
+// at the sample nearest a set time after it (0.1 s by default).
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -24,13 +24,10 @@
 
 namespace partimix::analysis {
 
-// How long after the rupture the summary's second pressure is taken [s].
-inline constexpr double kPressureAfterRupture = 0.1;
-
 class Droplet final : public Analysis {
  public:
-  // Throws std::invalid_argument without a shell material, with link <= 0 or with dimensions
-  // other than 2 and 3.
+  // Throws std::invalid_argument without a shell material, with link <= 0, after_rupture <= 0
+  // or with dimensions other than 2 and 3.
   explicit Droplet(const DropletOptions& options);
   std::vector<Column> columns() const override;
   // Throws RunError when the particles lack a field of the multi-material scheme (material,
@@ -39,10 +36,10 @@ class Droplet final : public Analysis {
   // The surfaces cannot be replayed: a resumed run labels them at its first sample.
   void replay(double time, std::span<const double> values) override;
   // diameter_ratio_max [-]; once ruptured rupture_time [s] and pressure_at_rupture [Pa]; once a
-  // sample at or past rupture_time + 0.1 s has come, pressure_100ms_after_rupture [Pa].
+  // sample at or past rupture_time + after_rupture has come, pressure_after_rupture [Pa].
   void add_figures(Figures& figures) const override;
   // rupture_time when the shell has not ruptured or its surfaces were labelled on resuming;
-  // pressure_100ms_after_rupture when the run ended too soon after the rupture.
+  // pressure_after_rupture when the run ended too soon after the rupture.
   void add_caveats(Caveats& caveats) const override;
 
  private:

@@ -288,8 +288,8 @@ void read_orientation_order(Reader& item, AnalysisSpec& analysis, int dimensions
 }
 
 // droplet: `shell` and `gas`, names from sph.materials (the shell's not among the gases), and
-// `link` (1.5 sph.spacing by default). Refused for a method without materials (an SPH scheme
-// other than multi_material, or another method).
+// `link` (1.5 sph.spacing by default) and `after_rupture` (0.1 s). Refused for a method without
+// materials (an SPH scheme other than multi_material, or another method).
 void read_droplet(Reader& item, AnalysisSpec& analysis, const Case& the_case,
                   const MethodSection& section) {
   const std::vector<std::string> names = section.material_names();
@@ -313,6 +313,7 @@ void read_droplet(Reader& item, AnalysisSpec& analysis, const Case& the_case,
   const std::optional<double> spacing = section.spacing();
   droplet.link = spacing ? item.optional<double>("link", kLinkSpacings * *spacing, kPositive)
                          : item.required<double>("link", kPositive);
+  droplet.after_rupture = item.optional<double>("after_rupture", 0.1, kPositive);
   droplet.dimensions = the_case.domain.dimensions;
 }
 

@@ -396,12 +396,15 @@ TEST(CaseAnalyses, DropletNamesItsMaterialsByIndexAndLinksOneAndAHalfSpacings) {
   EXPECT_EQ(droplet.shell, 1);
   EXPECT_EQ(droplet.gas, (std::vector<int>{3, 2}));
   EXPECT_DOUBLE_EQ(droplet.link, 0.015);
+  EXPECT_DOUBLE_EQ(droplet.after_rupture, 0.1);
   EXPECT_EQ(droplet.dimensions, 2);
   EXPECT_DOUBLE_EQ(loaded.resolved.at("analyses")[0].at("link"), 0.015);
   const io::Case one_gas =
-      load_text(droplet_case("  - {type: droplet, shell: shell, gas: vapour, link: 0.02}\n"));
+      load_text(droplet_case("  - {type: droplet, shell: shell, gas: vapour, link: 0.02, "
+                             "after_rupture: 6.7e-5}\n"));
   EXPECT_EQ(only_analysis(one_gas).droplet.gas, (std::vector<int>{2}));
   EXPECT_DOUBLE_EQ(only_analysis(one_gas).droplet.link, 0.02);
+  EXPECT_DOUBLE_EQ(only_analysis(one_gas).droplet.after_rupture, 6.7e-5);
 }
 
 TEST(CaseAnalyses, DropletShellMustBeAMaterial) {
