@@ -6,9 +6,10 @@
 // bounce apart. Checked: with Monaghan's artificial stress (epsilon = 0.3) no two particles of
 // a ring come closer than half a spacing (the tensile instability's clumping) within 12 ms, and
 // the rings leave with their velocities reversed (held: more than half the start's); without
-// it, particles clump within 2 ms, which shows the check can fail. Measured (2026-11-30): closest
-// 0.76 spacings and -0.78 of the start's speed at 12 ms; without, 0.04 spacings at 2 ms (0.001
-// and -0.07 at 12 ms: the clumped rings barely part).
+// it, particles clump, which shows the check can fail. Measured (2026-11-30, the velocity
+// gradient corrected to first order): closest 0.80 spacings and -0.79 of the start's speed at
+// 12 ms; without, 0.13 spacings (before the correction: 0.76 and -0.78; without, 0.04 spacings
+// at 2 ms).
 #include <gtest/gtest.h>
 
 #include <cmath>

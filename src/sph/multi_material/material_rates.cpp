@@ -37,8 +37,25 @@ struct PairSums {
   double expansion = 0.0;
   double heating = 0.0;
   Mat3 velocity_gradient = Mat3::Zero();
+  Mat3 position_moment = Mat3::Zero();
   Vec3 unity_gradient = Vec3::Zero();
 };
+
+// A determinant of the moment B below this (1 on a full lattice) leaves the gradient uncorrected.
+constexpr double kSmallestMoment = 0.1;
+
+// The velocity gradient corrected to first order, L B^-1 with B = sum_j m_j / rho_j (x_j - x_i)
+// (x) grad W-bar (Randles & Libersky 1996; Bonet & Lok 1999): exact for a linear velocity field
+// whatever the neighbours, so that a free surface or a disordered lattice does not scatter the
+// strain rate. In 2D B's z row and column are empty and its zz entry is set to 1. Where the
+// neighbours are too few to invert B the gradient stays uncorrected.
+Mat3 corrected_gradient(const Mat3& gradient, Mat3 moment) {
+  if (moment(2, 2) == 0.0)
+    moment(2, 2) = 1.0;
+  if (std::abs(moment.determinant()) < kSmallestMoment)
+    return gradient;
+  return gradient * moment.inverse();
+}
 
 }  // namespace
 
@@ -95,13 +112,14 @@ void material_rates(const MaterialParticles& p, std::size_t count, const CellGri
           sums.heating -= 0.5 * viscous * vij.squaredNorm();
           const double volume = mj / p.density[j];
           sums.velocity_gradient -= volume * vij * grad.transpose();
+          sums.position_moment -= volume * rij * grad.transpose();
           sums.unity_gradient += volume * grad;
         },
         count);
     rates.acceleration[i] = sums.acceleration;
     rates.expansion[i] = sums.expansion;
     rates.heating[i] = sums.heating;
-    rates.velocity_gradient[i] = sums.velocity_gradient;
+    rates.velocity_gradient[i] = corrected_gradient(sums.velocity_gradient, sums.position_moment);
     rates.unity_gradient[i] = sums.unity_gradient;
   }
 }

@@ -18,7 +18,9 @@
 //   - (R_i + R_j) f_ij^4 grad W-bar, f_ij = W(r_ij, h) / W(dp_i, h), R the artificial stress;
 //   - m_j (mu_i + mu_j) / (rho_i rho_j) r_ij . grad W-bar / (r_ij^2 + 0.01 h^2) v_ij (Morris et
 //     al. 1997), heating -1/2 of it dotted with v_ij;
-//   - L_i = sum_j m_j / rho_j (v_j - v_i) (x) grad W-bar, the velocity gradient;
+//   - L_i = [sum_j m_j / rho_j (v_j - v_i) (x) grad W-bar] B_i^-1, the velocity gradient with
+//     the first-order correction B_i = sum_j m_j / rho_j (x_j - x_i) (x) grad W-bar (Randles &
+//     Libersky 1996), uncorrected where det B_i < 0.1;
 //   - g_i = sum_j m_j / rho_j grad W-bar, the gradient of unity: 0 inside, |g_i| the surface
 //     per unit volume at a free surface (the ambient's heat flux).
 #include <cstddef>
