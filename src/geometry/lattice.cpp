@@ -111,6 +111,14 @@ double reach_xy(const LatticeBox& box, double spacing, const Vec3& centre) {
   return reach;
 }
 
+// The angle of ring `ring`'s first point [rad]: the golden angle 2 pi (2 - phi) per ring, or
+// half a step (of `around` per turn) on the odd rings.
+double ring_turn(long ring, long around, bool golden) {
+  if (golden)
+    return 2.0 * std::numbers::pi * (2.0 - std::numbers::phi) * static_cast<double>(ring);
+  return std::numbers::pi / static_cast<double>(around) * static_cast<double>(ring % 2);
+}
+
 // Calls visit(x) for each point of the box's Cartesian lattice, or of the rings about
 // options.polar_centre within the box; `visits` is how many that will be.
 template <class Visit>
@@ -131,10 +139,10 @@ void for_each_point(const LatticeBox& box, double spacing, const LatticeOptions&
     for (long ring = 0; ring < rings; ++ring) {
       const double radius = (static_cast<double>(ring) + 0.5) * spacing;
       const long around = std::max(1L, std::lround(2.0 * std::numbers::pi * radius / spacing));
-      const double stagger = 0.5 * static_cast<double>(ring % 2);
+      const double turn = ring_turn(ring, around, options.golden_rings);
       for (long a = 0; a < around; ++a) {
-        const double angle = 2.0 * std::numbers::pi * (static_cast<double>(a) + stagger) /
-                             static_cast<double>(around);
+        const double angle =
+            turn + 2.0 * std::numbers::pi * static_cast<double>(a) / static_cast<double>(around);
         const Vec3 x(centre.x() + radius * std::cos(angle), centre.y() + radius * std::sin(angle),
                      z);
         if (within_box_xy(box, spacing, x))

@@ -30,11 +30,16 @@ namespace partimix::geometry {
 //   Cartesian. A circle about the centre whose radius is a whole number of spacings then lies
 //   half a spacing from the rings on both sides, so that curved walls are smooth. Only the
 //   points within the Cartesian lattice box (below) are taken.
+// - golden_rings: ring k turned by k times the golden angle (137.5 degrees) instead of the odd
+//   rings by half a step. Neighbouring rings, whose counts differ by about six, fall into step
+//   at six angles; staggered, every pair does so at about the same six, which makes radial seams
+//   through a thin layer of rings (a droplet's shell); golden, each pair at its own.
 // - visits, points: the lattice points a sampler may visit (the box it spans) and keep. Past
 //   either it throws InputError (without a location: the caller knows which key asked) before
 //   it allocates, whatever the shape's size: the case's limits (io/size_limits.hpp) come here.
 struct LatticeOptions {
   std::optional<Vec3> polar_centre;
+  bool golden_rings = false;
   double visits = 1.0e9;
   double points = 1.0e9;
 };

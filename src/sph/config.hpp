@@ -62,6 +62,7 @@ struct Config {
   // sph.lattice: particles on rings about this point's z-parallel axis (geometry/lattice.hpp);
   // absent: the Cartesian lattice.
   std::optional<Vec3> polar_centre;
+  bool golden_rings = false;  // sph.lattice.rings: golden (geometry/lattice.hpp)
   // scheme: multi_material (docs/multi-material-sph.md): its materials and settings.
   MultiMaterialSettings multi_material;
 

@@ -55,7 +55,7 @@ double kernel_reach(const Config& config) {
 // `existing` particles of the store.
 geometry::LatticeOptions lattice_after(const io::Case& the_case, const Config& config,
                                        std::size_t existing) {
-  return {config.polar_centre, the_case.limits.lattice_points,
+  return {config.polar_centre, config.golden_rings, the_case.limits.lattice_points,
           the_case.limits.particles - static_cast<double>(existing)};
 }
 

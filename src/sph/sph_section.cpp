@@ -61,19 +61,20 @@ std::string read_gradient_kernel(Reader& section) {
   return name == "same" ? std::string() : name;
 }
 
-// `lattice`: {type: cartesian} (the default), or {type: polar, centre} for rings about the
-// centre's z-parallel axis; not along a periodic x or y (the rings would not repeat).
-std::optional<Vec3> read_polar_centre(Reader& sph, const Domain& domain) {
+// `lattice`: {type: cartesian} (the default), or {type: polar, centre, rings} for rings about
+// the centre's z-parallel axis, `rings` staggered (the default) or golden; not along a periodic
+// x or y (the rings would not repeat).
+void read_lattice(Reader& sph, const Domain& domain, Config& config) {
   Reader section = sph.optional_map("lattice");
   if (section.choice("type", "cartesian", {"cartesian", "polar"}) == "cartesian") {
     section.done();
-    return std::nullopt;
+    return;
   }
-  const Vec3 centre = section.vector("centre", domain.dimensions);
+  config.polar_centre = section.vector("centre", domain.dimensions);
+  config.golden_rings = section.choice("rings", "staggered", {"staggered", "golden"}) == "golden";
   section.done();
   if (domain.periodic[0] || domain.periodic[1])
     throw sph.error("lattice", "a polar lattice cannot repeat along a periodic x or y axis");
-  return centre;
 }
 
 // `materials` and `multi_material` belong to scheme: multi_material alone.
@@ -123,7 +124,7 @@ Config read_config(Reader& root, const Domain& domain) {
       section.choice("wall_velocity", config.wall_velocity, {"adami", "extrapolated"});
   config.time_step = read_time_step(section);
   config.sort_interval = section.optional<int>("sort_interval", config.sort_interval, at_least(1));
-  config.polar_centre = read_polar_centre(section, domain);
+  read_lattice(section, domain, config);
   config.scheme = section.choice("scheme", config.scheme,
                                  {"weakly_compressible", "incompressible", kMultiMaterial});
   config.pressure_tolerance =

@@ -93,6 +93,32 @@ TEST(Lattice, CylinderVesselWallsCoverSideAndBottom) {
   EXPECT_TRUE(side);
 }
 
+// Golden rings: the same rings and counts as staggered ones, ring k's first point turned by k
+// golden angles (2 pi (2 - phi)), so that no two neighbouring pairs of rings start in the same
+// phase.
+TEST(Lattice, GoldenRingsTurnEachRingByTheGoldenAngle) {
+  const double dp = 0.01;
+  LatticeOptions staggered;
+  staggered.polar_centre = Vec3(0.5, 0.5, 0.0);
+  LatticeOptions golden = staggered;
+  golden.golden_rings = true;
+  const Cylinder disc(Vec3(0.5, 0.5, -1.0), 0.1, 2.0);
+  const std::vector<Vec3> plain = fill(disc, dp, domain_2d(), staggered);
+  const std::vector<Vec3> turned = fill(disc, dp, domain_2d(), golden);
+  ASSERT_EQ(turned.size(), plain.size());
+  const double golden_angle = 2.0 * std::numbers::pi * (2.0 - std::numbers::phi);
+  std::size_t first = 0;
+  for (int ring = 0; ring < 10; ++ring) {
+    const double radius = (ring + 0.5) * dp;
+    const long around = std::lround(2.0 * std::numbers::pi * radius / dp);
+    const Vec3 offset = turned[first] - *golden.polar_centre;
+    EXPECT_NEAR(offset.norm(), radius, 1e-12);
+    const double turn = std::atan2(offset.y(), offset.x()) - golden_angle * ring;
+    EXPECT_NEAR(std::remainder(turn, 2.0 * std::numbers::pi), 0.0, 1e-12) << "ring " << ring;
+    first += static_cast<std::size_t>(around);
+  }
+}
+
 // A 2D annulus on the polar lattice about its centre (the Taylor-Couette set-up): the fluid
 // fills rings at R_in + (k + 1/2) dp, k = 0..9, each of round(2 pi r / dp) points, and the wall
 // rings lie at R_out + (k + 1/2) dp outside and R_in - (k + 1/2) dp inside.

@@ -198,6 +198,18 @@ TEST(CaseLoader, MinimalCaseTakesTheDefaults) {
   EXPECT_EQ(test_support::sph_config(loaded).sort_interval, 20);
   EXPECT_EQ(test_support::sph_config(loaded).viscous_operator, "auto");
   EXPECT_EQ(test_support::sph_config(loaded).viscosity_mean, "arithmetic");
+  EXPECT_FALSE(test_support::sph_config(loaded).polar_centre.has_value());
+  EXPECT_FALSE(test_support::sph_config(loaded).golden_rings);
+}
+
+TEST(CaseLoader, PolarLatticeTakesItsCentreAndRings) {
+  std::string text = kMinimal2D;
+  const std::string spacing = "  spacing: 0.01\n";
+  text.insert(text.find(spacing) + spacing.size(),
+              "  lattice: {type: polar, centre: [0.8, 0.5], rings: golden}\n");
+  const sph::Config& config = test_support::sph_config(load_text(text));
+  EXPECT_EQ(config.polar_centre, Vec3(0.8, 0.5, 0.0));
+  EXPECT_TRUE(config.golden_rings);
 }
 
 TEST(CaseLoader, ThreeDimensionalCylinderCase) {
