@@ -32,7 +32,7 @@ std::vector<std::string> shipped_cases() {
 }
 
 // A few steps: 0.002 s, or the case's first frame where that comes sooner (the gel droplet,
-// whose gas bounds its step to 7.5 ns, writes a frame every 2 us); a DEM fill settles for a short
+// whose gas bounds its step to 7.5 ns, writes a frame every 10 us); a DEM fill settles for a short
 // time only (grains placed by the case do not settle). Under the sanitizers, where a step of
 // the 171k-particle dam break takes seconds (its 0.002 s took 287 s), one step and a settling of
 // a step or two: what they look for is in the code each step runs, not in the step count.
