@@ -207,7 +207,8 @@ TEST(CaseLoader, PolarLatticeTakesItsCentreAndRings) {
   const std::string spacing = "  spacing: 0.01\n";
   text.insert(text.find(spacing) + spacing.size(),
               "  lattice: {type: polar, centre: [0.8, 0.5], rings: golden}\n");
-  const sph::Config& config = test_support::sph_config(load_text(text));
+  const Case loaded = load_text(text);
+  const sph::Config& config = test_support::sph_config(loaded);
   EXPECT_EQ(config.polar_centre, Vec3(0.8, 0.5, 0.0));
   EXPECT_TRUE(config.golden_rings);
 }
