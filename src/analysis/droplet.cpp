@@ -71,7 +71,8 @@ double gas_temperature(const ParticleStore& particles, const DropletFields& fiel
 
 }  // namespace
 
-Droplet::Droplet(const DropletOptions& options) : options_(options), rupture_test_(options.link) {
+Droplet::Droplet(const DropletOptions& options)
+    : options_(options), rupture_test_(options.link), ring_test_(options.link) {
   if (options.shell < 0)
     throw std::invalid_argument("droplet: needs the shell's material");
   if (!(options.link > 0.0))
@@ -98,7 +99,7 @@ void Droplet::sample(const ParticleStore& particles, double time, std::span<doub
   values[kPressure] = pressure_inside(particles, fields, options_.shell);
   values[kDamageMax] = damage_max(particles, fields, options_.shell);
   values[kGasTemperature] = gas_temperature(particles, fields, options_.gas);
-  values[kRuptured] = ruptured(particles, fields) ? 1.0 : 0.0;
+  values[kRuptured] = ruptured(particles, fields, bulk.centre) ? 1.0 : 0.0;
   record(time, values);
 }
 
@@ -133,7 +134,8 @@ void Droplet::label_surfaces(const ParticleStore& particles, const DropletFields
   labelled_at_ = time;
 }
 
-bool Droplet::ruptured(const ParticleStore& particles, const DropletFields& fields) {
+bool Droplet::ruptured(const ParticleStore& particles, const DropletFields& fields,
+                       const Vec3& centre) {
   shell_position_.clear();
   shell_damage_.clear();
   shell_surface_.clear();
@@ -145,7 +147,16 @@ bool Droplet::ruptured(const ParticleStore& particles, const DropletFields& fiel
     shell_damage_.push_back(fields.damage[i]);
     shell_surface_.push_back(labelled == surface_of_.end() ? ShellSurface::none : labelled->second);
   }
-  return rupture_test_.ruptured(shell_position_, shell_damage_, shell_surface_);
+  if (rupture_test_.ruptured(shell_position_, shell_damage_, shell_surface_))
+    return true;
+  if (options_.dimensions != 2)
+    return false;
+  const bool closes = ring_test_.closes(shell_position_, shell_damage_, centre);
+  if (!ring_checked_) {
+    ring_checked_ = true;
+    ring_closed_ = closes;
+  }
+  return ring_closed_ && !closes;
 }
 
 void Droplet::record(double time, std::span<const double> values) {

@@ -4,7 +4,9 @@
 // particles (the droplet), the equivalent diameter D from their volume sum m / rho and its ratio
 // to the first sample's D0; the volume-weighted mean pressure above the ambient of the particles
 // inside the shell (all that are not shell: liquid and gas); the largest damage of the shell; the
-// mass-weighted mean temperature of the gas; and whether the shell has ruptured (ShellRupture).
+// mass-weighted mean temperature of the gas; and whether the shell has ruptured: a path of fully
+// damaged particles through it (ShellRupture) or, in 2D, its intact particles no longer closing
+// round the centroid (ShellRing).
 // The shell's inner and outer surfaces are labelled at the first sample by each shell particle's
 // distance from the droplet's centroid, and kept by particle id. The summary: the largest D / D0,
 // the time of the first sample that finds the shell ruptured, the pressure then, and the pressure
@@ -20,6 +22,7 @@
 #include "analysis/droplet_fields.hpp"
 #include "analysis/droplet_measures.hpp"
 #include "analysis/droplet_options.hpp"
+#include "analysis/shell_ring.hpp"
 #include "analysis/shell_rupture.hpp"
 
 namespace partimix::analysis {
@@ -50,12 +53,17 @@ class Droplet final : public Analysis {
   bool is_shell(const ParticleStore& particles, const DropletFields& fields, std::size_t i) const;
   void label_surfaces(const ParticleStore& particles, const DropletFields& fields,
                       const Vec3& centre, double time);
-  bool ruptured(const ParticleStore& particles, const DropletFields& fields);
+  bool ruptured(const ParticleStore& particles, const DropletFields& fields, const Vec3& centre);
   void record(double time, std::span<const double> values);
   std::optional<std::string> rupture_caveat() const;
 
   DropletOptions options_;
   ShellRupture rupture_test_;
+  ShellRing ring_test_;
+  // 2D: whether the shell's intact particles closed round the centroid at the first sample; the
+  // shell has ruptured when they no longer do (and counts as such only if they did).
+  bool ring_checked_ = false;
+  bool ring_closed_ = false;
   // The shell's labelled surfaces, by particle id; ids absent are ShellSurface::none.
   std::unordered_map<std::int64_t, ShellSurface> surface_of_;
   bool labelled_ = false;

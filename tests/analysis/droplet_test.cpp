@@ -10,7 +10,9 @@
 // (900 n_v + 2 1500 n_a) / (n_v + 2 n_a) (by mass, not by volume, which would weigh them 1:1).
 // Scaling every position by s and every density by 1 / s^2 gives D / D0 = s. A radial crack of
 // damage 1 through all four rings ruptures the shell, also after the particles are reordered
-// (the surfaces are kept by id); a crack one ring short does not. Tolerance 1e-12: round-off.
+// (the surfaces are kept by id); a crack one ring short does not; so does moving three
+// particles of each ring far off without any damage (the shell parts), unless the shell was
+// already open at the first sample. Tolerance 1e-12: round-off.
 #include "analysis/droplet.hpp"
 
 #include <gmock/gmock.h>
@@ -124,6 +126,16 @@ class DropletStore : public ::testing::Test {
     }
   }
 
+  // Moves the shell particles near angle 0 (x > 0, |y| < 1.2: three of each ring) 100 m along
+  // x, undamaged: the shell parts with a gap of four spacings.
+  void part() {
+    for (std::size_t i = 0; i < store_.size(); ++i) {
+      Vec3& x = store_.position()[i];
+      if (layer_.values[i] >= 0 && x.x() > 0.0 && std::abs(x.y()) < 1.2)
+        x.x() += 100.0;
+    }
+  }
+
   // Every position times s and every density over s^2: each volume m / rho times s^2.
   void scale(double s) {
     for (std::size_t i = 0; i < store_.size(); ++i) {
@@ -200,6 +212,23 @@ TEST_F(DropletStore, CrackThroughAllLayersRuptures) {
   const std::vector<double> row = sample_once(droplet, store_, 0.2);
   EXPECT_EQ(column(droplet, row, "ruptured"), 1.0);
   EXPECT_EQ(column(droplet, row, "damage_max"), 1.0);
+}
+
+TEST_F(DropletStore, ShellPartedWithoutDamageRuptures) {
+  Droplet droplet(droplet_options());
+  sample_once(droplet, store_, 0.0);
+  part();
+  const std::vector<double> row = sample_once(droplet, store_, 0.1);
+  EXPECT_EQ(column(droplet, row, "ruptured"), 1.0);
+  EXPECT_EQ(column(droplet, row, "damage_max"), 0.0);
+}
+
+// A shell open from the first sample (not a closed droplet) is not found to open later.
+TEST_F(DropletStore, ShellOpenFromTheFirstSampleIsNotARupture) {
+  part();
+  Droplet droplet(droplet_options());
+  EXPECT_EQ(column(droplet, sample_once(droplet, store_, 0.0), "ruptured"), 0.0);
+  EXPECT_EQ(column(droplet, sample_once(droplet, store_, 0.1), "ruptured"), 0.0);
 }
 
 TEST_F(DropletStore, SurfacesAreKeptThroughAReordering) {
