@@ -57,6 +57,8 @@ sph:
       solid:
         shear_modulus: 1.0e6
         artificial_stress: 0.2
+        formulation: total_lagrangian
+        hourglass: 0.5
         johnson_cook:
           A: 1.0e5
           B: 2.0e5
@@ -184,6 +186,8 @@ TEST(CaseMultiMaterial, JohnsonCookSolidLoads) {
   ASSERT_TRUE(shell.solid.has_value());
   EXPECT_DOUBLE_EQ(shell.solid->shear_modulus, 1.0e6);
   EXPECT_DOUBLE_EQ(shell.solid->artificial_stress, 0.2);
+  EXPECT_TRUE(shell.solid->total_lagrangian);
+  EXPECT_DOUBLE_EQ(shell.solid->hourglass, 0.5);
   const materials::JohnsonCookParameters& jc = shell.solid->johnson_cook;
   EXPECT_DOUBLE_EQ(jc.A, 1.0e5);
   EXPECT_DOUBLE_EQ(jc.B, 2.0e5);
@@ -238,6 +242,8 @@ TEST(CaseMultiMaterial, SolidWithoutJohnsonCookIsElastic) {
   const sph::SolidSpec& solid = settings_of(loaded).materials[0].solid.value();
   constexpr double kInfinity = std::numeric_limits<double>::infinity();
   EXPECT_DOUBLE_EQ(solid.artificial_stress, 0.3);
+  EXPECT_FALSE(solid.total_lagrangian);
+  EXPECT_DOUBLE_EQ(solid.hourglass, 0.1);
   EXPECT_EQ(solid.johnson_cook.A, kInfinity);
   EXPECT_EQ(solid.johnson_cook.D1, kInfinity);
   EXPECT_EQ(solid.johnson_cook.melt_temperature, kInfinity);
@@ -365,6 +371,18 @@ TEST(CaseMultiMaterial, CriticalDamageAboveOne) {
 TEST(CaseMultiMaterial, SolidNeedsShearModulus) {
   expect_error(multi_material_case(kLiquid + "      solid: {artificial_stress: 0.3}\n"),
                "sph.materials[0].solid.shear_modulus", "missing required key 'shear_modulus'");
+}
+
+TEST(CaseMultiMaterial, UnknownSolidFormulation) {
+  expect_error(
+      multi_material_case(kLiquid + "      solid: {shear_modulus: 1.0e6, formulation: eulerian}\n"),
+      "sph.materials[0].solid.formulation", "total_lagrangian");
+}
+
+TEST(CaseMultiMaterial, NegativeHourglass) {
+  expect_error(
+      multi_material_case(kLiquid + "      solid: {shear_modulus: 1.0e6, hourglass: -1}\n"),
+      "sph.materials[0].solid.hourglass", "must be >= 0, got -1");
 }
 
 TEST(CaseMultiMaterial, TimeStepFactorsArePositive) {

@@ -87,20 +87,26 @@ void material_rates(const MaterialParticles& p, std::size_t count, const CellGri
           const Vec3 vij = p.velocity[i] - p.velocity[j];
           const double mj = p.mass[j];
           const double cross = 1.0 / (p.density[i] * p.density[j]);
+          // A bonded pair's stress force is the total Lagrangian one (total_lagrangian.hpp).
+          const bool bonded = p.bonds != nullptr && bonded_pair(*p.bonds, i, j, support);
           const Mat3 sigma_j = stress(p, j);
           if (summation) {
             const double other_weight = 1.0 / (p.omega[j] * p.density[j] * p.density[j]);
-            sums.acceleration +=
-                mj * (own_weight * sigma_i * grad_i + other_weight * sigma_j * grad_j);
+            if (!bonded) {
+              sums.acceleration +=
+                  mj * (own_weight * sigma_i * grad_i + other_weight * sigma_j * grad_j);
+            }
             sums.expansion += mj * own_weight * vij.dot(grad_i);
           } else {
-            sums.acceleration += mj * cross * (sigma_i + sigma_j) * grad;
+            if (!bonded)
+              sums.acceleration += mj * cross * (sigma_i + sigma_j) * grad;
             sums.expansion += mj * cross * vij.dot(grad);
           }
           const double pi = artificial_viscosity(p, i, j, rij, r2, h, av);
           sums.acceleration -= mj * pi * grad;
-          // The artificial stress acts between solids only; fluids skip its two kernel lookups.
-          if (i_stressed || !p.artificial_stress[j].isZero()) {
+          // The artificial stress acts between solids only, and not between bonded ones; fluids
+          // skip its two kernel lookups.
+          if (!bonded && (i_stressed || !p.artificial_stress[j].isZero())) {
             const double dp = 0.5 * (p.spacing[i] + p.spacing[j]);
             sums.acceleration += mj * repulsion_weight(kernel, r, h, dp) *
                                  (p.artificial_stress[i] + p.artificial_stress[j]) * grad;

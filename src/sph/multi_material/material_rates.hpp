@@ -23,11 +23,14 @@
 //     Libersky 1996), uncorrected where det B_i < 0.1;
 //   - g_i = sum_j m_j / rho_j grad W-bar, the gradient of unity: 0 inside, |g_i| the surface
 //     per unit volume at a free surface (the ambient's heat flux).
+// Pairs of bonded total Lagrangian solid particles skip the stress and artificial stress terms:
+// their stress force is total_lagrangian.hpp's.
 #include <cstddef>
 #include <span>
 
 #include "core/vec.hpp"
 #include "particles/cell_grid.hpp"
+#include "sph/multi_material/total_lagrangian.hpp"
 #include "sph/scaled_kernel.hpp"
 
 namespace partimix::sph {
@@ -47,6 +50,9 @@ struct MaterialParticles {
   std::span<const double> spacing;          // dp of f_ij, the particle's (m / rho)^(1/d)
   std::span<const double> sound_speed;      // [m/s]
   std::span<const double> viscosity;        // dynamic [Pa s]
+  // The total Lagrangian solids' bonds, whose pairs skip the stress and artificial stress terms
+  // here; null without such solids.
+  const BondedParticles* bonds = nullptr;
 };
 
 struct ArtificialViscosity {

@@ -17,6 +17,10 @@ struct SolidSpec {
   double shear_modulus = 0.0;                     // G [Pa]
   materials::JohnsonCookParameters johnson_cook;  // eqs. 11-13 of the seed
   double artificial_stress = 0.3;                 // epsilon of Monaghan's artificial stress
+  // Bonded through the reference configuration (sph/multi_material/total_lagrangian.hpp)
+  // instead of updated Lagrangian pairs.
+  bool total_lagrangian = false;
+  double hourglass = 0.1;  // alpha of the total Lagrangian hourglass penalty
 };
 
 struct MaterialSpec {

@@ -142,6 +142,10 @@ std::optional<SolidSpec> read_solid(Reader& material) {
   solid.shear_modulus = section.required<double>("shear_modulus", kPositive);
   solid.artificial_stress =
       section.optional<double>("artificial_stress", solid.artificial_stress, kNonNegative);
+  const std::string formulation = section.choice("formulation", "updated_lagrangian",
+                                                 {"updated_lagrangian", "total_lagrangian"});
+  solid.total_lagrangian = formulation == "total_lagrangian";
+  solid.hourglass = section.optional<double>("hourglass", solid.hourglass, kNonNegative);
   solid.johnson_cook = read_johnson_cook(section);
   section.done();
   return solid;

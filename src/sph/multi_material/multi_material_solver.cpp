@@ -109,12 +109,61 @@ MultiMaterialSolver::MultiMaterialSolver(ParticleStore& store, const Domain& dom
       std::any_of(conductivity_.begin(), conductivity_.end(), [](double k) { return k > 0.0; });
   largest_h = std::max(largest_h, surface_table_.support_radius() / scaled_.support());
   widen_grid(largest_h);
+  set_up_total_lagrangian();
   evaluate();
   initial_dt_ = stable_dt_;
 }
 
 const Material& MultiMaterialSolver::material_of(std::size_t i) const {
   return materials_[static_cast<std::size_t>(material_[i])];
+}
+
+// Flags the particles of total Lagrangian solids and keeps their reference state: the volume
+// m / rho0 and smoothing length at the start, and the positions as the store field
+// reference_position (restored with the rest from a checkpoint).
+void MultiMaterialSolver::set_up_total_lagrangian() {
+  const std::size_t n = store_.size();
+  bonded_.assign(n, 0);
+  double largest_h = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& solid = material_of(i).spec().solid;
+    if (solid && solid->total_lagrangian) {
+      bonded_[i] = 1;
+      largest_h = std::max(largest_h, h_[i]);
+    }
+  }
+  if (largest_h == 0.0)
+    return;
+  for (const bool periodic : domain_.periodic) {
+    if (periodic) {
+      throw InputError(InputLocation{"", 0, 0, "sph.materials"},
+                       "a solid of formulation total_lagrangian needs a domain without periodic "
+                       "axes");
+    }
+  }
+  reference_volume_.assign(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i)
+    reference_volume_[i] = store_.mass()[i] / density_[i];
+  reference_h_ = h_;
+  hourglass_.assign(n, 0.0);
+  cauchy_.assign(n, Mat3::Zero());
+  std::vector<Vec3>& reference = store_.add_vector("reference_position", "m", false).values;
+  reference = store_.position();
+  reference_ = &reference;
+  total_lagrangian_.emplace(domain_, scaled_, largest_h);
+}
+
+BondedParticles MultiMaterialSolver::bonded_particles() const {
+  return {store_.position(), store_.velocity(), *reference_, store_.mass(), reference_volume_,
+          reference_h_,      bonded_,           cauchy_,     hourglass_};
+}
+
+// F and L of the total Lagrangian solids (their L replacing the updated Lagrangian one) and
+// their bonded pairs' forces.
+void MultiMaterialSolver::add_total_lagrangian_forces() {
+  const BondedParticles bonds = bonded_particles();
+  total_lagrangian_->deform(bonds, store_.size(), velocity_gradient_);
+  total_lagrangian_->add_forces(bonds, store_.size(), acceleration_);
 }
 
 // The largest radius a grid may have: a third of the shortest periodic axis.
@@ -148,14 +197,20 @@ void MultiMaterialSolver::evaluate() {
   update_smoothing_lengths();
   update_state();
   const std::size_t n = store_.size();
-  const MaterialParticles particles{store_.position(),  store_.velocity(),
-                                    store_.mass(),      h_,
-                                    density_,           omega_,
-                                    momentum_pressure_, stress_,
-                                    artificial_stress_, spacing_,
-                                    sound_speed_,       viscosity_};
+  std::optional<BondedParticles> bonds;
+  if (total_lagrangian_)
+    bonds = bonded_particles();
+  MaterialParticles particles{store_.position(),  store_.velocity(),
+                              store_.mass(),      h_,
+                              density_,           omega_,
+                              momentum_pressure_, stress_,
+                              artificial_stress_, spacing_,
+                              sound_speed_,       viscosity_};
+  particles.bonds = bonds ? &*bonds : nullptr;
   material_rates(particles, n, *grid_, scaled_, pairing_, artificial_viscosity_,
                  {acceleration_, expansion_, heating_, velocity_gradient_, unity_gradient_});
+  if (total_lagrangian_)
+    add_total_lagrangian_forces();
   for (Vec3& a : acceleration_)
     a += gravity_;
   add_surface_tension();
@@ -217,10 +272,16 @@ void MultiMaterialSolver::update_state() {
     double c2 =
         std::pow(materials::adiabatic_sound_speed(material.eos(), rho, t, spec.specific_heat), 2);
     if (spec.solid) {
-      c2 += 4.0 * spec.solid->shear_modulus / (3.0 * rho);
+      const double shear = spec.solid->shear_modulus;
+      const double bulk = rho * c2;
+      c2 += 4.0 * shear / (3.0 * rho);
       const Mat3 sigma = stress_[i] - gauge * Mat3::Identity();
       artificial_stress_[i] =
           materials::artificial_stress(sigma, rho, spec.solid->artificial_stress);
+      if (total_lagrangian_ && bonded_[i]) {
+        cauchy_[i] = stress_[i] - momentum_pressure_[i] * Mat3::Identity();
+        hourglass_[i] = spec.solid->hourglass * 9.0 * bulk * shear / (3.0 * bulk + shear);
+      }
     }
     sound_speed_[i] = std::sqrt(c2);
     spacing_[i] = std::pow(store_.mass()[i] / rho, inverse_d);

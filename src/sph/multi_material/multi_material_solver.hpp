@@ -16,6 +16,7 @@
 #include "sph/kernel_table.hpp"
 #include "sph/multi_material/material.hpp"
 #include "sph/multi_material/material_rates.hpp"
+#include "sph/multi_material/total_lagrangian.hpp"
 #include "sph/scaled_kernel.hpp"
 
 namespace partimix::sph {
@@ -51,6 +52,9 @@ class MultiMaterialSolver final : public Solver {
 
   const Material& material_of(std::size_t i) const;
   void evaluate();
+  void set_up_total_lagrangian();
+  BondedParticles bonded_particles() const;
+  void add_total_lagrangian_forces();
   void update_smoothing_lengths();
   double largest_grid_radius() const;
   void widen_grid(double largest_h);
@@ -102,6 +106,15 @@ class MultiMaterialSolver final : public Solver {
   std::vector<Mat3> stress_, artificial_stress_, velocity_gradient_;
   std::vector<Vec3> unity_gradient_, colour_gradient_, normal_gradient_;
   HalfStep half_;
+
+  // Total Lagrangian solids (absent without any): their particles' flags, reference volumes,
+  // smoothing lengths and hourglass stiffnesses, Cauchy stress, and the store field
+  // reference_position (their positions at the start).
+  std::optional<TotalLagrangianSolids> total_lagrangian_;
+  std::vector<std::uint8_t> bonded_;
+  std::vector<double> reference_volume_, reference_h_, hourglass_;
+  std::vector<Mat3> cauchy_;
+  const std::vector<Vec3>* reference_ = nullptr;
 
   bool conducts_ = false;  // some material conducts heat
   double time_ = 0.0;

@@ -1,0 +1,101 @@
+#include "sph/multi_material/total_lagrangian.hpp"
+
+#include <cmath>
+
+namespace partimix::sph {
+namespace {
+
+// Below this |det B| (1 on a full lattice) a particle has too few bonds to correct: B^-1 = I.
+constexpr double kSmallestMoment = 0.1;
+
+// A 2D tensor's empty zz entry set to 1, so that it inverts and its determinant is the area's.
+Mat3 with_unit_zz(Mat3 m, int dimensions) {
+  if (dimensions == 2)
+    m(2, 2) = 1.0;
+  return m;
+}
+
+}  // namespace
+
+TotalLagrangianSolids::TotalLagrangianSolids(const Domain& domain, const ScaledKernel& kernel,
+                                             double largest_h0)
+    : kernel_(kernel),
+      dimensions_(domain.dimensions),
+      grid_(domain, kernel.support() * largest_h0) {}
+
+// Calls fn(j, X_ij, grad0 W_ij) for every particle j bonded to i.
+template <class Fn>
+void TotalLagrangianSolids::for_each_bond(const BondedParticles& p, std::size_t i, Fn&& fn) const {
+  grid_.for_each_neighbour(i, p.reference, [&](std::size_t j, const Vec3& xij, double r2) {
+    if (j == i || !bonded_pair(p, i, j, kernel_.support()))
+      return;
+    const double r = std::sqrt(r2);
+    const double h = 0.5 * (p.reference_h[i] + p.reference_h[j]);
+    fn(j, xij, (kernel_.derivative(r, h) / r) * xij);
+  });
+}
+
+void TotalLagrangianSolids::deform(const BondedParticles& p, std::size_t count,
+                                   std::span<Mat3> velocity_gradient) {
+  grid_.build(p.reference);
+  deformation_.assign(count, Mat3::Identity());
+  correction_.assign(count, Mat3::Identity());
+  const auto n = static_cast<std::ptrdiff_t>(count);
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
+    const auto i = static_cast<std::size_t>(ii);
+    if (!p.bonded[i])
+      continue;
+    Mat3 moment = Mat3::Zero();
+    Mat3 stretch = Mat3::Zero();
+    Mat3 rate = Mat3::Zero();
+    for_each_bond(p, i, [&](std::size_t j, const Vec3& reference_ij, const Vec3& grad) {
+      const double volume = p.reference_volume[j];
+      moment -= volume * reference_ij * grad.transpose();
+      stretch += volume * (p.position[j] - p.position[i]) * grad.transpose();
+      rate += volume * (p.velocity[j] - p.velocity[i]) * grad.transpose();
+    });
+    moment = with_unit_zz(moment, dimensions_);
+    if (std::abs(moment.determinant()) >= kSmallestMoment)
+      correction_[i] = moment.inverse();
+    deformation_[i] = with_unit_zz(stretch * correction_[i], dimensions_);
+    velocity_gradient[i] = (rate * correction_[i]) * deformation_[i].inverse();
+  }
+}
+
+void TotalLagrangianSolids::add_forces(const BondedParticles& p, std::size_t count,
+                                       std::span<Vec3> acceleration) {
+  piola_.assign(count, Mat3::Zero());
+  for (std::size_t i = 0; i < count; ++i) {
+    if (!p.bonded[i])
+      continue;
+    const Mat3& f = deformation_[i];
+    piola_[i] = f.determinant() * p.stress[i] * f.inverse().transpose();
+  }
+  const auto n = static_cast<std::ptrdiff_t>(count);
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
+    const auto i = static_cast<std::size_t>(ii);
+    if (!p.bonded[i])
+      continue;
+    Vec3 force = Vec3::Zero();
+    for_each_bond(p, i, [&](std::size_t j, const Vec3& reference_ij, const Vec3& grad) {
+      const double volumes = p.reference_volume[i] * p.reference_volume[j];
+      force += volumes * (piola_[i] + piola_[j]) * grad;
+      const Vec3 xij = p.position[i] - p.position[j];
+      const double r = xij.norm();
+      if (r == 0.0)
+        return;
+      const Vec3 unit = xij / r;
+      const Vec3 error = (deformation_[i] + deformation_[j]) * reference_ij - 2.0 * xij;
+      const double r0 = reference_ij.norm();
+      const double h = 0.5 * (p.reference_h[i] + p.reference_h[j]);
+      const double stiffness = 0.5 * (p.hourglass[i] + p.hourglass[j]);
+      force +=
+          0.5 * stiffness * volumes * kernel_.value(r0, h) / (r0 * r0) * error.dot(unit) * unit;
+    });
+    acceleration[i] += force / p.mass[i];
+  }
+}
+
+}  // namespace partimix::sph

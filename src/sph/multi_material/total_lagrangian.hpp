@@ -1,0 +1,75 @@
+#pragma once
+// Total Lagrangian solids of the multi-material SPH scheme (docs/multi-material-sph.md, "Total
+// Lagrangian solids"): the particles of solids with `formulation: total_lagrangian` are bonded
+// to those within the kernel's support in the reference configuration X (their positions at the
+// start), and a bonded pair's stress force uses the kernel gradient at X, which never changes:
+// there is no tensile instability (Belytschko, Guo, Liu & Xiao 2000; Vignjevic, Reveles &
+// Campbell 2006). With V0 = m / rho0, grad0 W_ij = dW/dr (|X_ij|, h0_ij) X_ij / |X_ij| and
+// X_ij = X_i - X_j, for bonded i:
+//   B_i = sum_j V0_j (X_j - X_i) (x) grad0 W_ij                  (first-order correction)
+//   F_i = [sum_j V0_j (x_j - x_i) (x) grad0 W_ij] B_i^-1,   dF_i/dt the same with v,
+//   L_i = dF_i/dt F_i^-1                                          (the velocity gradient)
+//   m_i dv_i/dt += sum_j V0_i V0_j (P_i B_i^-T + P_j B_j^-T) grad0 W_ij,   P = J sigma F^-T
+// (Ganzenmueller 2015, Comput. Methods Appl. Mech. Engrg. 286), and against the zero-energy
+// modes the same paper's hourglass penalty, with x_ij = x_i - x_j and delta_ij^k = (F_k X_ij -
+// x_ij) . x_ij / |x_ij|:
+//   m_i dv_i/dt += 1/2 (c_i + c_j)/2 V0_i V0_j W0_ij / |X_ij|^2 (delta_ij^i + delta_ij^j)
+//   x_ij/|x_ij|,
+// c = alpha E the hourglass stiffness of each particle. In 2D B and F have 1 at zz. The pairs of
+// other particles, and of bonded particles not bonded to each other, stay updated Lagrangian
+// (sph/multi_material/material_rates.hpp). Needs a domain without periodic axes.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "core/vec.hpp"
+#include "particles/cell_grid.hpp"
+#include "sph/scaled_kernel.hpp"
+
+namespace partimix::sph {
+
+struct BondedParticles {
+  std::span<const Vec3> position;
+  std::span<const Vec3> velocity;
+  std::span<const Vec3> reference;  // X, the positions at the start
+  std::span<const double> mass;
+  std::span<const double> reference_volume;  // V0 = m / rho0
+  std::span<const double> reference_h;       // h0
+  std::span<const std::uint8_t> bonded;      // 1: a particle of a total Lagrangian solid
+  std::span<const Mat3> stress;              // Cauchy sigma [Pa]
+  std::span<const double> hourglass;         // c = alpha E [Pa]
+};
+
+// Whether i and j, both bonded particles, are bonded to each other: |X_ij| below the support
+// of their mean reference smoothing length.
+inline bool bonded_pair(const BondedParticles& p, std::size_t i, std::size_t j, double support) {
+  const double reach = 0.5 * support * (p.reference_h[i] + p.reference_h[j]);
+  return p.bonded[i] && p.bonded[j] &&
+         (p.reference[i] - p.reference[j]).squaredNorm() < reach * reach;
+}
+
+class TotalLagrangianSolids {
+ public:
+  // largest_h0: the largest reference smoothing length, for the reference configuration's grid.
+  TotalLagrangianSolids(const Domain& domain, const ScaledKernel& kernel, double largest_h0);
+
+  // F and L of the bonded particles of [0, count), L written into velocity_gradient.
+  void deform(const BondedParticles& p, std::size_t count, std::span<Mat3> velocity_gradient);
+  // The bonded pairs' stress and hourglass forces, added to acceleration; after deform().
+  void add_forces(const BondedParticles& p, std::size_t count, std::span<Vec3> acceleration);
+
+  std::span<const Mat3> deformation_gradient() const { return deformation_; }
+
+ private:
+  template <class Fn>
+  void for_each_bond(const BondedParticles& p, std::size_t i, Fn&& fn) const;
+
+  const ScaledKernel& kernel_;
+  int dimensions_;
+  CellGrid grid_;                  // of the reference positions
+  std::vector<Mat3> deformation_;  // F
+  std::vector<Mat3> correction_;   // B^-1
+  std::vector<Mat3> piola_;        // P B^-T
+};
+
+}  // namespace partimix::sph
