@@ -9,15 +9,16 @@
 //   B_i = sum_j V0_j (X_j - X_i) (x) grad0 W_ij                  (first-order correction)
 //   F_i = [sum_j V0_j (x_j - x_i) (x) grad0 W_ij] B_i^-1,   dF_i/dt the same with v,
 //   L_i = dF_i/dt F_i^-1                                          (the velocity gradient)
-//   m_i dv_i/dt += sum_j V0_i V0_j (P_i B_i^-T + P_j B_j^-T) grad0 W_ij,   P = J sigma F^-T
-// (Ganzenmueller 2015, Comput. Methods Appl. Mech. Engrg. 286), and against the zero-energy
-// modes the same paper's hourglass penalty, with x_ij = x_i - x_j and delta_ij^k = (F_k X_ij -
-// x_ij) . x_ij / |x_ij|:
-//   m_i dv_i/dt += 1/2 (c_i + c_j)/2 V0_i V0_j W0_ij / |X_ij|^2 (delta_ij^i + delta_ij^j)
-//   x_ij/|x_ij|,
-// c = alpha E the hourglass stiffness of each particle. In 2D B and F have 1 at zz. The pairs of
-// other particles, and of bonded particles not bonded to each other, stay updated Lagrangian
-// (sph/multi_material/material_rates.hpp). Needs a domain without periodic axes.
+//   m_i dv_i/dt += sum_j V0_i V0_j (P_i + P_j) grad0 W_ij,   P = J sigma F^-T
+// (Ganzenmueller 2015, Comput. Methods Appl. Mech. Engrg. 286; the momentum with the plain
+// reference gradient, so that for small strains it is the updated Lagrangian pair force and adds
+// up with a liquid's pairs at an interface), and against the zero-energy modes the same paper's
+// hourglass penalty, with x_ij = x_i - x_j, delta_ij^k = (F_k X_ij - x_ij) . x_ij / |x_ij| and
+// c_ij the mean of the two particles' hourglass stiffnesses c = alpha E:
+//   m_i dv_i/dt += 1/2 c_ij V0_i V0_j W0_ij / |X_ij|^2 (delta_ij^i + delta_ij^j) x_ij / |x_ij|.
+// In 2D B and F have 1 at zz. The pairs of other particles, and of bonded particles not bonded to
+// each other, stay updated Lagrangian (sph/multi_material/material_rates.hpp). Needs a domain
+// without periodic axes.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -69,7 +70,7 @@ class TotalLagrangianSolids {
   CellGrid grid_;                  // of the reference positions
   std::vector<Mat3> deformation_;  // F
   std::vector<Mat3> correction_;   // B^-1
-  std::vector<Mat3> piola_;        // P B^-T
+  std::vector<Mat3> piola_;        // P = J sigma F^-T
 };
 
 }  // namespace partimix::sph
