@@ -64,6 +64,7 @@ class Patch : public ::testing::Test {
     TotalLagrangianSolids solids(domain, scaled, kH);
     velocity_gradient.assign(position.size(), Mat3::Zero());
     acceleration.assign(position.size(), Vec3::Zero());
+    solids.refer(p, position.size());
     solids.deform(p, position.size(), velocity_gradient);
     solids.add_forces(p, position.size(), acceleration);
     deformation.assign(solids.deformation_gradient().begin(), solids.deformation_gradient().end());

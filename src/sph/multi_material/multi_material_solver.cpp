@@ -151,6 +151,7 @@ void MultiMaterialSolver::set_up_total_lagrangian() {
   reference = store_.position();
   reference_ = &reference;
   total_lagrangian_.emplace(domain_, scaled_, largest_h);
+  total_lagrangian_->refer(bonded_particles(), n);
 }
 
 BondedParticles MultiMaterialSolver::bonded_particles() const {
@@ -495,6 +496,8 @@ void MultiMaterialSolver::restore(const StateArchive& archive, const std::string
   stable_dt_ = archive.scalar(prefix + "stable_dt");
   grid_.emplace(domain_, archive.scalar(prefix + "grid_radius"));
   read_stress_fields();
+  if (total_lagrangian_)
+    total_lagrangian_->refer(bonded_particles(), store_.size());
 }
 
 }  // namespace partimix::sph

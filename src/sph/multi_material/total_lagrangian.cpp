@@ -35,32 +35,47 @@ void TotalLagrangianSolids::for_each_bond(const BondedParticles& p, std::size_t 
   });
 }
 
-void TotalLagrangianSolids::deform(const BondedParticles& p, std::size_t count,
-                                   std::span<Mat3> velocity_gradient) {
-  grid_.build(p.reference);
-  deformation_.assign(count, Mat3::Identity());
-  correction_.assign(count, Mat3::Identity());
+// Calls fn(i) for every bonded particle of [0, count), in parallel.
+template <class Fn>
+void TotalLagrangianSolids::for_each_bonded(const BondedParticles& p, std::size_t count,
+                                            Fn&& fn) const {
   const auto n = static_cast<std::ptrdiff_t>(count);
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
     const auto i = static_cast<std::size_t>(ii);
-    if (!p.bonded[i])
-      continue;
+    if (p.bonded[i])
+      fn(i);
+  }
+}
+
+void TotalLagrangianSolids::refer(const BondedParticles& p, std::size_t count) {
+  grid_.build(p.reference);
+  correction_.assign(count, Mat3::Identity());
+  deformation_.assign(count, Mat3::Identity());
+  for_each_bonded(p, count, [&](std::size_t i) {
     Mat3 moment = Mat3::Zero();
-    Mat3 stretch = Mat3::Zero();
-    Mat3 rate = Mat3::Zero();
     for_each_bond(p, i, [&](std::size_t j, const Vec3& reference_ij, const Vec3& grad) {
-      const double volume = p.reference_volume[j];
-      moment -= volume * reference_ij * grad.transpose();
-      stretch += volume * (p.position[j] - p.position[i]) * grad.transpose();
-      rate += volume * (p.velocity[j] - p.velocity[i]) * grad.transpose();
+      moment -= p.reference_volume[j] * reference_ij * grad.transpose();
     });
     moment = with_unit_zz(moment, dimensions_);
     if (std::abs(moment.determinant()) >= kSmallestMoment)
       correction_[i] = moment.inverse();
+  });
+}
+
+void TotalLagrangianSolids::deform(const BondedParticles& p, std::size_t count,
+                                   std::span<Mat3> velocity_gradient) {
+  for_each_bonded(p, count, [&](std::size_t i) {
+    Mat3 stretch = Mat3::Zero();
+    Mat3 rate = Mat3::Zero();
+    for_each_bond(p, i, [&](std::size_t j, const Vec3&, const Vec3& grad) {
+      const double volume = p.reference_volume[j];
+      stretch += volume * (p.position[j] - p.position[i]) * grad.transpose();
+      rate += volume * (p.velocity[j] - p.velocity[i]) * grad.transpose();
+    });
     deformation_[i] = with_unit_zz(stretch * correction_[i], dimensions_);
     velocity_gradient[i] = (rate * correction_[i]) * deformation_[i].inverse();
-  }
+  });
 }
 
 void TotalLagrangianSolids::add_forces(const BondedParticles& p, std::size_t count,
@@ -72,12 +87,7 @@ void TotalLagrangianSolids::add_forces(const BondedParticles& p, std::size_t cou
     const Mat3& f = deformation_[i];
     piola_[i] = f.determinant() * p.stress[i] * f.inverse().transpose();
   }
-  const auto n = static_cast<std::ptrdiff_t>(count);
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
-    const auto i = static_cast<std::size_t>(ii);
-    if (!p.bonded[i])
-      continue;
+  for_each_bonded(p, count, [&](std::size_t i) {
     Vec3 force = Vec3::Zero();
     for_each_bond(p, i, [&](std::size_t j, const Vec3& reference_ij, const Vec3& grad) {
       const double volumes = p.reference_volume[i] * p.reference_volume[j];
@@ -95,7 +105,7 @@ void TotalLagrangianSolids::add_forces(const BondedParticles& p, std::size_t cou
           0.5 * stiffness * volumes * kernel_.value(r0, h) / (r0 * r0) * error.dot(unit) * unit;
     });
     acceleration[i] += force / p.mass[i];
-  }
+  });
 }
 
 }  // namespace partimix::sph

@@ -54,7 +54,10 @@ class TotalLagrangianSolids {
   // largest_h0: the largest reference smoothing length, for the reference configuration's grid.
   TotalLagrangianSolids(const Domain& domain, const ScaledKernel& kernel, double largest_h0);
 
-  // F and L of the bonded particles of [0, count), L written into velocity_gradient.
+  // Lays out the reference positions' grid and each bonded particle's B^-1, which depend on the
+  // reference configuration alone: once, and again when the particles are restored.
+  void refer(const BondedParticles& p, std::size_t count);
+  // F and L of the bonded particles of [0, count), L written into velocity_gradient; after refer().
   void deform(const BondedParticles& p, std::size_t count, std::span<Mat3> velocity_gradient);
   // The bonded pairs' stress and hourglass forces, added to acceleration; after deform().
   void add_forces(const BondedParticles& p, std::size_t count, std::span<Vec3> acceleration);
@@ -62,6 +65,8 @@ class TotalLagrangianSolids {
   std::span<const Mat3> deformation_gradient() const { return deformation_; }
 
  private:
+  template <class Fn>
+  void for_each_bonded(const BondedParticles& p, std::size_t count, Fn&& fn) const;
   template <class Fn>
   void for_each_bond(const BondedParticles& p, std::size_t i, Fn&& fn) const;
 
