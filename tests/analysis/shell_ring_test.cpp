@@ -11,53 +11,18 @@
 #include <vector>
 
 #include "analysis/shell_ring.hpp"
+#include "support/four_layer_ring.hpp"
 
 namespace partimix::analysis {
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
-
-class RingOfFour : public ::testing::Test {
+class RingOfFour : public ::testing::Test, protected test_support::FourLayerRing {
  protected:
-  // Lays the ring with a parting of arc `gap` on the inner layer at angle 0: the angles are
-  // squeezed into [gap / 20, 2 pi), so the inner layer's ends are 1 + gap apart along it.
-  void lay(double gap = 0.0) {
-    position.clear();
-    layer_of.clear();
-    angle_of.clear();
-    const double start = gap / 20.0;
-    for (int layer = 0; layer < 4; ++layer) {
-      const double radius = 20.0 + layer;
-      const int count = static_cast<int>(std::round(kTwoPi * radius));
-      for (int k = 0; k < count; ++k) {
-        const double angle = start + (kTwoPi - start) * k / count;
-        position.emplace_back(radius * std::cos(angle), radius * std::sin(angle), 0.0);
-        layer_of.push_back(layer);
-        angle_of.push_back(angle);
-      }
-    }
-    damage.assign(position.size(), 0.0);
-  }
-
   void SetUp() override { lay(); }
-
-  // Damages the particles within `half_width` radians of `at` on layers [0, layers).
-  void crack(int layers, double half_width, double value = 1.0, double at = 0.0) {
-    for (std::size_t i = 0; i < position.size(); ++i) {
-      const double off = std::abs(std::remainder(angle_of[i] - at, kTwoPi));
-      if (layer_of[i] < layers && off <= half_width)
-        damage[i] = value;
-    }
-  }
 
   bool closes(const Vec3& centre = Vec3::Zero()) {
     return ShellRing(1.5).closes(position, damage, centre);
   }
-
-  std::vector<Vec3> position;
-  std::vector<int> layer_of;
-  std::vector<double> angle_of;
-  std::vector<double> damage;
 };
 
 TEST_F(RingOfFour, IntactRingCloses) {

@@ -6,49 +6,28 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 #include <vector>
 
 #include "analysis/shell_rupture.hpp"
+#include "support/four_layer_ring.hpp"
 
 namespace partimix::analysis {
 namespace {
 
-class Ring : public ::testing::Test {
+class Ring : public ::testing::Test, protected test_support::FourLayerRing {
  protected:
   void SetUp() override {
-    for (int layer = 0; layer < 4; ++layer) {
-      const double radius = 20.0 + layer;
-      const int count = static_cast<int>(std::round(2.0 * std::numbers::pi * radius));
-      for (int k = 0; k < count; ++k) {
-        const double angle = 2.0 * std::numbers::pi * k / count;
-        position.emplace_back(radius * std::cos(angle), radius * std::sin(angle), 0.0);
-        angle_of.push_back(angle);
-        layer_of.push_back(layer);
-        surface.push_back(layer == 0   ? ShellSurface::inner
-                          : layer == 3 ? ShellSurface::outer
-                                       : ShellSurface::none);
-      }
-    }
-    damage.assign(position.size(), 0.0);
-  }
-
-  // Damages the particles within `half_width` radians of angle 0 on layers [0, layers).
-  void crack(int layers, double half_width, double value = 1.0) {
-    for (std::size_t i = 0; i < position.size(); ++i) {
-      const double angle = std::min(angle_of[i], 2.0 * std::numbers::pi - angle_of[i]);
-      if (layer_of[i] < layers && angle <= half_width)
-        damage[i] = value;
+    lay();
+    for (const int layer : layer_of) {
+      surface.push_back(layer == 0   ? ShellSurface::inner
+                        : layer == 3 ? ShellSurface::outer
+                                     : ShellSurface::none);
     }
   }
 
   bool ruptured() { return ShellRupture(1.5).ruptured(position, damage, surface); }
 
-  std::vector<Vec3> position;
-  std::vector<double> angle_of;
-  std::vector<int> layer_of;
   std::vector<ShellSurface> surface;
-  std::vector<double> damage;
 };
 
 TEST_F(Ring, IntactRingHasNotRuptured) {
