@@ -3,7 +3,7 @@
 // tank run past half time with checkpoints, then on to the end from the last checkpoint in a fresh
 // simulation, and end bit for bit as the run that went through: series.csv, the series of an
 // analysis on its own schedule, every frame of both methods, the collections and the figures;
-// the same for superquadric grains.
+// the same for superquadric grains and for a droplet with a total Lagrangian shell.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -131,6 +131,68 @@ dem:
 analyses:
   - {type: mixing, region: box, min: [0, 0, 0], max: [0.05, 0.05, 0.05], cells: [2, 2, 1]}
 )";
+}
+
+// A small gel droplet (cases/gel_droplet_2d.yaml shrunk to 14 spacings): a heated gas bubble,
+// liquid and a total Lagrangian shell whose reference positions are part of the checkpoint, so
+// the resumed run, its droplet series and its frames are the run that went through.
+std::string droplet(const std::string& end) {
+  return R"(solver: sph
+dimensions: 2
+domain: {min: [-3.0e-4, -3.0e-4], max: [3.0e-4, 3.0e-4]}
+time: {end: )" +
+         end + R"(, output_interval: 1.0e-6, sample_interval: 2.5e-7, checkpoint_interval: 1.0e-6}
+sph:
+  spacing: 1.0e-5
+  lattice: {type: polar, centre: [0, 0], rings: golden}
+  scheme: multi_material
+  multi_material:
+    ambient: {pressure: 1.0e7, temperature: 288}
+  materials:
+    - name: vapour
+      eos: {model: redlich_kwong, molar_mass: 0.029, a: 1.295, b: 4.9e-5}
+      pressure: 1.0e7
+      temperature: 288
+      specific_heat: 743
+      conductivity: 0.026
+      heat_source: 2.0e12
+    - name: fuel
+      eos: {model: tait, reference_density: 800, sound_speed: 50}
+      temperature: 288
+      specific_heat: 2000
+      viscosity: 1.5e-3
+      conductivity: 0.12
+      surface_tension: 0.025
+    - name: shell
+      eos: {model: tait, reference_density: 1000, sound_speed: 300}
+      temperature: 288
+      specific_heat: 1500
+      conductivity: 0.2
+      solid:
+        shear_modulus: 2.0e7
+        formulation: total_lagrangian
+        johnson_cook: {A: 5.0e5, B: 8.0e6, n: 1, room_temperature: 288, melt_temperature: 600,
+                       D1: 0.36, damage_threshold: 0.32}
+fluid:
+  regions:
+    - {shape: cylinder, center: [0, 0], radius: 5.0e-5, material: vapour}
+    - {shape: cylinder, center: [0, 0], radius: 1.0e-4, material: fuel}
+    - {shape: cylinder, center: [0, 0], radius: 1.4e-4, material: shell}
+analyses:
+  - {type: droplet, shell: shell, gas: vapour}
+)";
+}
+
+TEST(ResumeInProcess, DropletWithATotalLagrangianShellResumesBitForBit) {
+  const TempDir dir;
+  ASSERT_NO_FATAL_FAILURE(
+      test_support::run_through_and_resumed(dir, droplet("3.0e-6"), droplet("2.5e-6")));
+  EXPECT_EQ(read_file(dir / "whole" / "series.csv"), read_file(dir / "parts" / "series.csv"));
+  for (int k = 0; k <= 3; ++k) {
+    const auto frame = std::filesystem::path("frames") / ("sph_00000" + std::to_string(k) + ".vtp");
+    ASSERT_FALSE(read_file(dir / "whole" / frame).empty()) << frame;
+    EXPECT_TRUE(read_file(dir / "whole" / frame) == read_file(dir / "parts" / frame)) << frame;
+  }
 }
 
 TEST(ResumeInProcess, EllipsoidsResumeBitForBit) {
