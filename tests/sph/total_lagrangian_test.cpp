@@ -62,12 +62,12 @@ class Patch : public ::testing::Test {
     const BondedParticles p{position, velocity, reference, mass,     volume,
                             h,        bonded,   stress,    hourglass};
     TotalLagrangianSolids solids(domain, scaled, kH);
-    velocity_gradient.assign(position.size(), Mat3::Zero());
     acceleration.assign(position.size(), Vec3::Zero());
     solids.refer(p, position.size());
-    solids.deform(p, position.size(), velocity_gradient);
+    solids.deform(p, position.size());
     solids.add_forces(p, position.size(), acceleration);
     deformation.assign(solids.deformation_gradient().begin(), solids.deformation_gradient().end());
+    velocity_gradient.assign(solids.velocity_gradient().begin(), solids.velocity_gradient().end());
   }
 
   // Whether particle i's support in the reference lattice lies inside the patch.

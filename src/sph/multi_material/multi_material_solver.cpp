@@ -159,12 +159,31 @@ BondedParticles MultiMaterialSolver::bonded_particles() const {
           reference_h_,      bonded_,           cauchy_,     hourglass_};
 }
 
-// F and L of the total Lagrangian solids (their L replacing the updated Lagrangian one) and
-// their bonded pairs' forces.
+// F and L of the total Lagrangian solids, and their density from F.
+void MultiMaterialSolver::deform_solids() {
+  total_lagrangian_->deform(bonded_particles(), store_.size());
+  take_solid_densities();
+}
+
+// The total Lagrangian solids' density from their last F: rho = m / (V0 det F), so that their
+// pressure follows the deformation their stress force is taken from.
+void MultiMaterialSolver::take_solid_densities() {
+  const std::span<const Mat3> deformation = total_lagrangian_->deformation_gradient();
+  for (std::size_t i = 0; i < store_.size(); ++i) {
+    if (bonded_[i])
+      density_[i] = store_.mass()[i] / (reference_volume_[i] * deformation[i].determinant());
+  }
+}
+
+// The total Lagrangian solids' L, replacing the updated Lagrangian one, and their bonded pairs'
+// forces; after deform_solids().
 void MultiMaterialSolver::add_total_lagrangian_forces() {
-  const BondedParticles bonds = bonded_particles();
-  total_lagrangian_->deform(bonds, store_.size(), velocity_gradient_);
-  total_lagrangian_->add_forces(bonds, store_.size(), acceleration_);
+  const std::span<const Mat3> rate = total_lagrangian_->velocity_gradient();
+  for (std::size_t i = 0; i < store_.size(); ++i) {
+    if (bonded_[i])
+      velocity_gradient_[i] = rate[i];
+  }
+  total_lagrangian_->add_forces(bonded_particles(), store_.size(), acceleration_);
 }
 
 // The largest radius a grid may have: a third of the shortest periodic axis.
@@ -196,6 +215,8 @@ void MultiMaterialSolver::widen_grid(double largest_h) {
 void MultiMaterialSolver::evaluate() {
   grid_->build(store_.position());
   update_smoothing_lengths();
+  if (total_lagrangian_)
+    deform_solids();
   update_state();
   const std::size_t n = store_.size();
   std::optional<BondedParticles> bonds;
@@ -336,6 +357,10 @@ void MultiMaterialSolver::update_temperature_rates() {
         (work + heating_[i] + conduction_[i] + spec.heat_source / rho + surface_heat) /
         spec.specific_heat;
     density_rate_[i] = pairing_ == DensityPairing::continuity ? rho * rho * expansion_[i] : 0.0;
+    // A total Lagrangian solid's density follows det F (deform_solids()); between evaluations
+    // it moves at the rate of its own L.
+    if (total_lagrangian_ && bonded_[i])
+      density_rate_[i] = -rho * velocity_gradient_[i].trace();
   }
 }
 
@@ -378,8 +403,9 @@ void MultiMaterialSolver::update_stable_dt() {
 
 // Kick-drift-kick (docs/multi-material-sph.md, "The scheme"): the rates at the new positions
 // are taken with the velocity, density, temperature and stress predicted to the step's end,
-// then the second half kick starts again from the half step's values. The solids then return
-// to their yield surface and accumulate damage.
+// then the second half kick starts again from the half step's values. Total Lagrangian solids
+// take their density from F at the step's end positions, those of the evaluation. The solids
+// then return to their yield surface and accumulate damage.
 void MultiMaterialSolver::step(double dt) {
   kick(0.5 * dt);
   drift(dt);
@@ -388,6 +414,8 @@ void MultiMaterialSolver::step(double dt) {
   evaluate();
   return_to_half_step();
   kick(0.5 * dt);
+  if (total_lagrangian_)
+    take_solid_densities();
   yield_solids(dt);
   write_stress_fields();
   time_ += dt;

@@ -54,6 +54,8 @@ class MultiMaterialSolver final : public Solver {
   void evaluate();
   void set_up_total_lagrangian();
   BondedParticles bonded_particles() const;
+  void deform_solids();
+  void take_solid_densities();
   void add_total_lagrangian_forces();
   void update_smoothing_lengths();
   double largest_grid_radius() const;

@@ -6,7 +6,7 @@ namespace partimix::sph {
 namespace {
 
 // Below this |det B| (1 on a full lattice) a particle has too few bonds to correct: B^-1 = I.
-constexpr double kSmallestMoment = 0.1;
+constexpr double kSmallestMoment = 1e-3;
 
 // A 2D tensor's empty zz entry set to 1, so that it inverts and its determinant is the area's.
 Mat3 with_unit_zz(Mat3 m, int dimensions) {
@@ -52,6 +52,7 @@ void TotalLagrangianSolids::refer(const BondedParticles& p, std::size_t count) {
   grid_.build(p.reference);
   correction_.assign(count, Mat3::Identity());
   deformation_.assign(count, Mat3::Identity());
+  velocity_gradient_.assign(count, Mat3::Zero());
   for_each_bonded(p, count, [&](std::size_t i) {
     Mat3 moment = Mat3::Zero();
     for_each_bond(p, i, [&](std::size_t j, const Vec3& reference_ij, const Vec3& grad) {
@@ -63,8 +64,7 @@ void TotalLagrangianSolids::refer(const BondedParticles& p, std::size_t count) {
   });
 }
 
-void TotalLagrangianSolids::deform(const BondedParticles& p, std::size_t count,
-                                   std::span<Mat3> velocity_gradient) {
+void TotalLagrangianSolids::deform(const BondedParticles& p, std::size_t count) {
   for_each_bonded(p, count, [&](std::size_t i) {
     Mat3 stretch = Mat3::Zero();
     Mat3 rate = Mat3::Zero();
@@ -74,7 +74,7 @@ void TotalLagrangianSolids::deform(const BondedParticles& p, std::size_t count,
       rate += volume * (p.velocity[j] - p.velocity[i]) * grad.transpose();
     });
     deformation_[i] = with_unit_zz(stretch * correction_[i], dimensions_);
-    velocity_gradient[i] = (rate * correction_[i]) * deformation_[i].inverse();
+    velocity_gradient_[i] = (rate * correction_[i]) * deformation_[i].inverse();
   });
 }
 

@@ -16,9 +16,10 @@
 // hourglass penalty, with x_ij = x_i - x_j, delta_ij^k = (F_k X_ij - x_ij) . x_ij / |x_ij| and
 // c_ij the mean of the two particles' hourglass stiffnesses c = alpha E:
 //   m_i dv_i/dt += 1/2 c_ij V0_i V0_j W0_ij / |X_ij|^2 (delta_ij^i + delta_ij^j) x_ij / |x_ij|.
-// In 2D B and F have 1 at zz. The pairs of other particles, and of bonded particles not bonded to
-// each other, stay updated Lagrangian (sph/multi_material/material_rates.hpp). Needs a domain
-// without periodic axes.
+// In 2D B and F have 1 at zz; B is inverted wherever |det B| >= 1e-3. The solver takes a bonded
+// particle's density from F, rho = m / (V0 det F). The pairs of other particles, and of bonded
+// particles not bonded to each other, stay updated Lagrangian
+// (sph/multi_material/material_rates.hpp). Needs a domain without periodic axes.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -57,12 +58,14 @@ class TotalLagrangianSolids {
   // Lays out the reference positions' grid and each bonded particle's B^-1, which depend on the
   // reference configuration alone: once, and again when the particles are restored.
   void refer(const BondedParticles& p, std::size_t count);
-  // F and L of the bonded particles of [0, count), L written into velocity_gradient; after refer().
-  void deform(const BondedParticles& p, std::size_t count, std::span<Mat3> velocity_gradient);
+  // F and L of the bonded particles of [0, count); after refer().
+  void deform(const BondedParticles& p, std::size_t count);
   // The bonded pairs' stress and hourglass forces, added to acceleration; after deform().
   void add_forces(const BondedParticles& p, std::size_t count, std::span<Vec3> acceleration);
 
+  // F and L after deform(), I and 0 for particles that are not bonded.
   std::span<const Mat3> deformation_gradient() const { return deformation_; }
+  std::span<const Mat3> velocity_gradient() const { return velocity_gradient_; }
 
  private:
   template <class Fn>
@@ -72,10 +75,11 @@ class TotalLagrangianSolids {
 
   const ScaledKernel& kernel_;
   int dimensions_;
-  CellGrid grid_;                  // of the reference positions
-  std::vector<Mat3> deformation_;  // F
-  std::vector<Mat3> correction_;   // B^-1
-  std::vector<Mat3> piola_;        // P = J sigma F^-T
+  CellGrid grid_;                        // of the reference positions
+  std::vector<Mat3> deformation_;        // F
+  std::vector<Mat3> velocity_gradient_;  // L
+  std::vector<Mat3> correction_;         // B^-1
+  std::vector<Mat3> piola_;              // P = J sigma F^-T
 };
 
 }  // namespace partimix::sph
