@@ -170,9 +170,16 @@ void MultiMaterialSolver::deform_solids() {
 void MultiMaterialSolver::take_solid_densities() {
   const std::span<const Mat3> deformation = total_lagrangian_->deformation_gradient();
   for (std::size_t i = 0; i < store_.size(); ++i) {
-    if (bonded_[i])
+    if (density_follows_deformation(i))
       density_[i] = store_.mass()[i] / (reference_volume_[i] * deformation[i].determinant());
   }
+}
+
+// Whether particle i's density comes from its F: a total Lagrangian solid's particle, unless
+// fully damaged. Its bonds never break, so once torn apart its F, taken from bonds across the
+// tear, can fold to a vanishing or negative determinant; it keeps the continuity density.
+bool MultiMaterialSolver::density_follows_deformation(std::size_t i) const {
+  return total_lagrangian_ && bonded_[i] && damage_[i] < 1.0;
 }
 
 // The total Lagrangian solids' L, replacing the updated Lagrangian one, and their bonded pairs'
@@ -359,7 +366,7 @@ void MultiMaterialSolver::update_temperature_rates() {
     density_rate_[i] = pairing_ == DensityPairing::continuity ? rho * rho * expansion_[i] : 0.0;
     // A total Lagrangian solid's density follows det F (deform_solids()); between evaluations
     // it moves at the rate of its own L.
-    if (total_lagrangian_ && bonded_[i])
+    if (density_follows_deformation(i))
       density_rate_[i] = -rho * velocity_gradient_[i].trace();
   }
 }

@@ -56,6 +56,7 @@ class MultiMaterialSolver final : public Solver {
   BondedParticles bonded_particles() const;
   void deform_solids();
   void take_solid_densities();
+  bool density_follows_deformation(std::size_t i) const;
   void add_total_lagrangian_forces();
   void update_smoothing_lengths();
   double largest_grid_radius() const;
