@@ -133,6 +133,18 @@ analyses:
 )";
 }
 
+// The run that went through (dir/whole) and the resumed one (dir/parts) wrote the same series
+// and the same frames 0 to `last` of `method`, none of them empty.
+void expect_same_outputs(const TempDir& dir, const std::string& method, int last) {
+  EXPECT_EQ(read_file(dir / "whole" / "series.csv"), read_file(dir / "parts" / "series.csv"));
+  for (int k = 0; k <= last; ++k) {
+    const auto frame =
+        std::filesystem::path("frames") / (method + "_00000" + std::to_string(k) + ".vtp");
+    ASSERT_FALSE(read_file(dir / "whole" / frame).empty()) << frame;
+    EXPECT_TRUE(read_file(dir / "whole" / frame) == read_file(dir / "parts" / frame)) << frame;
+  }
+}
+
 // A small gel droplet (cases/gel_droplet_2d.yaml shrunk to 14 spacings): a heated gas bubble,
 // liquid and a total Lagrangian shell whose reference positions are part of the checkpoint, so
 // the resumed run, its droplet series and its frames are the run that went through.
@@ -187,23 +199,14 @@ TEST(ResumeInProcess, DropletWithATotalLagrangianShellResumesBitForBit) {
   const TempDir dir;
   ASSERT_NO_FATAL_FAILURE(
       test_support::run_through_and_resumed(dir, droplet("3.0e-6"), droplet("2.5e-6")));
-  EXPECT_EQ(read_file(dir / "whole" / "series.csv"), read_file(dir / "parts" / "series.csv"));
-  for (int k = 0; k <= 3; ++k) {
-    const auto frame = std::filesystem::path("frames") / ("sph_00000" + std::to_string(k) + ".vtp");
-    ASSERT_FALSE(read_file(dir / "whole" / frame).empty()) << frame;
-    EXPECT_TRUE(read_file(dir / "whole" / frame) == read_file(dir / "parts" / frame)) << frame;
-  }
+  expect_same_outputs(dir, "sph", 3);
 }
 
 TEST(ResumeInProcess, EllipsoidsResumeBitForBit) {
   const TempDir dir;
   ASSERT_NO_FATAL_FAILURE(
       test_support::run_through_and_resumed(dir, ellipsoids("0.1"), ellipsoids("0.065")));
-  EXPECT_EQ(read_file(dir / "whole" / "series.csv"), read_file(dir / "parts" / "series.csv"));
-  for (int k = 0; k <= 5; ++k) {
-    const auto frame = std::filesystem::path("frames") / ("dem_00000" + std::to_string(k) + ".vtp");
-    EXPECT_TRUE(read_file(dir / "whole" / frame) == read_file(dir / "parts" / frame)) << frame;
-  }
+  expect_same_outputs(dir, "dem", 5);
 }
 
 TEST(ResumeInProcess, ACheckpointOfOtherParticlesDoesNotFit) {
