@@ -31,13 +31,16 @@ std::vector<std::string> shipped_cases() {
   return files;
 }
 
-// A few steps: 0.002 s, or the case's first frame where that comes sooner (the gel droplet,
-// whose gas bounds its step to 7.5 ns, writes a frame every 10 us); a DEM fill settles for a short
+// A few steps: 0.002 s, or a tenth of the case's first frame where that comes sooner, but never
+// less than one sample (the gel droplet, whose gas bounds its step to 7.5 ns, writes a frame
+// every 10 us and samples every 1 us: 1 us, 133 steps); a DEM fill settles for a short
 // time only (grains placed by the case do not settle). Under the sanitizers, where a step of
 // the 171k-particle dam break takes seconds (its 0.002 s took 287 s), one step and a settling of
 // a step or two: what they look for is in the code each step runs, not in the step count.
 std::vector<std::string> first_steps(const io::Case& the_case) {
-  const double span = std::min(0.002, the_case.time.output_interval);
+  const double span =
+      std::min({0.002, the_case.time.output_interval,
+                std::max(the_case.time.sample_interval, 0.1 * the_case.time.output_interval)});
   const std::string end = PARTIMIX_SANITIZED ? "time.end=1e-6" : fmt::format("time.end={}", span);
   if (the_case.method("dem") == nullptr || !the_case.section<dem::DemSection>("dem").fill)
     return {end};
