@@ -10,7 +10,9 @@ thickness t holds Δp = σ_θ t / R. With ε = ln(R / R0) the hoop log strain, R
 ring taken to keep its area, t R = t0 R0 (the plastic flow is incompressible; the elastic
 volume change, of order σ / K, is left out), t = t0 e^(-ε) and
 
-    Δp = σ_θ(ε) (t0 / R0) e^(-2ε),   D / D0 = R / R0 = e^ε.
+    Δp = σ_θ(ε) (t0 / R0) e^(-2ε),   D / D0 = (R + t/2) / (R0 + t0/2),
+
+D the diameter of the ring's outline, as the droplet analysis measures it.
 
 σ_θ(ε) is integrated in small hoop-strain steps dε at one point of the ring, its principal axes
 (r, θ, z) fixed, with σ_r = 0 (the thin ring: the pressure is small against σ_θ) and dε_z = 0;
@@ -102,9 +104,15 @@ def hoop_step(material, stress, hoop_increment, yield_stress):
     return stress_update(material, stress, (radial_increment, hoop_increment, 0.0), yield_stress)
 
 
+def outline_ratio(radius, thickness, strain):
+    """D/D0 of the outline, (R + t/2) / (R0 + t0/2), with R = R0 e^ε and t = t0 e^(-ε)."""
+    return (radius * math.exp(strain) + 0.5 * thickness * math.exp(-strain)) / \
+        (radius + 0.5 * thickness)
+
+
 def inflate(material, radius, thickness, max_strain, steps):
-    """Rows (ε, D/D0 = e^ε, σ_θ, ε_p, D, Δp = σ_θ (t0 / R0) e^(-2ε)) after each of `steps`
-    equal hoop-strain steps to max_strain, from the unstressed ring."""
+    """Rows (ε, D/D0 = (R + t/2) / (R0 + t0/2), σ_θ, ε_p, D, Δp = σ_θ (t0 / R0) e^(-2ε)) after
+    each of `steps` equal hoop-strain steps to max_strain, from the unstressed ring."""
     stress = [0.0, 0.0, 0.0]
     plastic_strain = damage = 0.0
     hoop_increment = max_strain / steps
@@ -116,7 +124,8 @@ def inflate(material, radius, thickness, max_strain, steps):
         damage = damage_of(material, plastic_strain)
         strain = k * hoop_increment
         pressure = stress[1] * thickness / radius * math.exp(-2.0 * strain)
-        rows.append((strain, math.exp(strain), stress[1], plastic_strain, damage, pressure))
+        rows.append((strain, outline_ratio(radius, thickness, strain), stress[1], plastic_strain,
+                     damage, pressure))
     return np.array(rows)
 
 

@@ -18,34 +18,17 @@ enum ColumnIndex : std::size_t {
   kRuptured
 };
 
-// The droplet's volume (the sum of m / rho over its particles) and its volume-weighted centroid.
-struct Bulk {
+// The volume-weighted centroid of the droplet's particles.
+Vec3 centroid_of(const ParticleStore& particles, const DropletFields& fields) {
+  Vec3 weighted = Vec3::Zero();
   double volume = 0.0;
-  Vec3 centre = Vec3::Zero();
-};
-
-Bulk bulk_of(const ParticleStore& particles, const DropletFields& fields) {
-  Bulk bulk;
   for (std::size_t i = 0; i < particles.size(); ++i) {
     if (!particles.is_material(i))
       continue;
-    const double volume = fields.volume(i);
-    bulk.volume += volume;
-    bulk.centre += volume * particles.position()[i];
+    volume += fields.volume(i);
+    weighted += fields.volume(i) * particles.position()[i];
   }
-  if (bulk.volume > 0.0)
-    bulk.centre /= bulk.volume;
-  return bulk;
-}
-
-// The volume-weighted mean pressure of the particles that are not of the shell [Pa].
-double pressure_inside(const ParticleStore& particles, const DropletFields& fields, int shell) {
-  WeightedMean mean;
-  for (std::size_t i = 0; i < particles.size(); ++i) {
-    if (particles.is_material(i) && fields.material[i] != shell)
-      mean.add(fields.pressure[i], fields.volume(i));
-  }
-  return mean.value();
+  return volume > 0.0 ? Vec3(weighted / volume) : weighted;
 }
 
 // The largest damage of the shell's particles; NaN without any.
@@ -90,16 +73,17 @@ std::vector<Column> Droplet::columns() const {
 
 void Droplet::sample(const ParticleStore& particles, double time, std::span<double> values) {
   const DropletFields fields(particles);
-  const Bulk bulk = bulk_of(particles, fields);
+  const Vec3 centre = centroid_of(particles, fields);
   if (!labelled_)
-    label_surfaces(particles, fields, bulk.centre, time);
-  const double diameter = equivalent_diameter(bulk.volume, options_.dimensions);
+    label_surfaces(particles, fields, centre, time);
+  collect_shell(particles, fields);
+  const double diameter = outline_diameter(centre);
   values[kDiameter] = diameter;
   values[kDiameterRatio] = diameter / (sampled_ ? first_diameter_ : diameter);
-  values[kPressure] = pressure_inside(particles, fields, options_.shell);
+  values[kPressure] = pressure_inside(particles, fields);
   values[kDamageMax] = damage_max(particles, fields, options_.shell);
   values[kGasTemperature] = gas_temperature(particles, fields, options_.gas);
-  values[kRuptured] = ruptured(particles, fields, bulk.centre) ? 1.0 : 0.0;
+  values[kRuptured] = ruptured(centre) ? 1.0 : 0.0;
   record(time, values);
 }
 
@@ -134,11 +118,11 @@ void Droplet::label_surfaces(const ParticleStore& particles, const DropletFields
   labelled_at_ = time;
 }
 
-bool Droplet::ruptured(const ParticleStore& particles, const DropletFields& fields,
-                       const Vec3& centre) {
+void Droplet::collect_shell(const ParticleStore& particles, const DropletFields& fields) {
   shell_position_.clear();
   shell_damage_.clear();
   shell_surface_.clear();
+  shell_volume_ = 0.0;
   for (std::size_t i = 0; i < particles.size(); ++i) {
     if (!is_shell(particles, fields, i))
       continue;
@@ -146,7 +130,38 @@ bool Droplet::ruptured(const ParticleStore& particles, const DropletFields& fiel
     shell_position_.push_back(particles.position()[i]);
     shell_damage_.push_back(fields.damage[i]);
     shell_surface_.push_back(labelled == surface_of_.end() ? ShellSurface::none : labelled->second);
+    shell_volume_ += fields.volume(i);
   }
+}
+
+// The mean distances of the shell's inner and outer surface particles from the centre give its
+// outline (outline_diameter); a shell of one layer, all inner, has both at the inner's.
+double Droplet::outline_diameter(const Vec3& centre) const {
+  WeightedMean inner;
+  WeightedMean outer;
+  for (std::size_t k = 0; k < shell_position_.size(); ++k) {
+    const double distance = (shell_position_[k] - centre).norm();
+    if (shell_surface_[k] == ShellSurface::inner)
+      inner.add(distance, 1.0);
+    else if (shell_surface_[k] == ShellSurface::outer)
+      outer.add(distance, 1.0);
+  }
+  const double outer_distance = std::isnan(outer.value()) ? inner.value() : outer.value();
+  return analysis::outline_diameter(inner.value(), outer_distance, shell_volume_,
+                                    options_.dimensions);
+}
+
+// The volume-weighted median pressure of the particles that are not of the shell [Pa].
+double Droplet::pressure_inside(const ParticleStore& particles, const DropletFields& fields) {
+  inside_pressure_.clear();
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    if (particles.is_material(i) && fields.material[i] != options_.shell)
+      inside_pressure_.emplace_back(fields.pressure[i], fields.volume(i));
+  }
+  return weighted_median(inside_pressure_);
+}
+
+bool Droplet::ruptured(const Vec3& centre) {
   if (rupture_test_.ruptured(shell_position_, shell_damage_, shell_surface_))
     return true;
   if (options_.dimensions != 2)

@@ -1,9 +1,12 @@
 #pragma once
 // The droplet measurements of the multi-material SPH scheme (docs/multi-material-sph.md, "The
 // scheme"; docs/case-reference.md, "analyses", droplet): every sample, over all the method's
-// particles (the droplet), the equivalent diameter D from their volume sum m / rho and its ratio
-// to the first sample's D0; the volume-weighted mean pressure above the ambient of the particles
-// inside the shell (all that are not shell: liquid and gas); the largest damage of the shell; the
+// particles (the droplet), the diameter D of the shell's outline (outline_diameter, from the
+// mean distances of its surfaces' particles from the droplet's centroid and its volume sum
+// m / rho) and its ratio to the first sample's D0; the volume-weighted median pressure above the
+// ambient of the particles inside the shell (all that are not shell: liquid and gas), which the
+// layers along the interfaces between materials, whose pressures stray far from the bulk's, do
+// not move as they move the mean; the largest damage of the shell; the
 // mass-weighted mean temperature of the gas; and whether the shell has ruptured: a path of fully
 // damaged particles through it (ShellRupture) or, in 2D, its intact particles no longer closing
 // round the centroid (ShellRing).
@@ -16,6 +19,7 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "analysis/analysis.hpp"
@@ -53,7 +57,11 @@ class Droplet final : public Analysis {
   bool is_shell(const ParticleStore& particles, const DropletFields& fields, std::size_t i) const;
   void label_surfaces(const ParticleStore& particles, const DropletFields& fields,
                       const Vec3& centre, double time);
-  bool ruptured(const ParticleStore& particles, const DropletFields& fields, const Vec3& centre);
+  // Gathers the shell's particles (positions, damage, surfaces and volume) for the measures below.
+  void collect_shell(const ParticleStore& particles, const DropletFields& fields);
+  double outline_diameter(const Vec3& centre) const;
+  double pressure_inside(const ParticleStore& particles, const DropletFields& fields);
+  bool ruptured(const Vec3& centre);
   void record(double time, std::span<const double> values);
   std::optional<std::string> rupture_caveat() const;
 
@@ -69,10 +77,13 @@ class Droplet final : public Analysis {
   bool labelled_ = false;
   bool labelled_on_resume_ = false;  // after replayed rows, not at the run's first sample
   double labelled_at_ = 0.0;         // [s]
-  // The shell's particles at a sample, for the rupture test (kept between samples).
+  // The shell's particles at a sample (kept between samples).
   std::vector<Vec3> shell_position_;
   std::vector<double> shell_damage_;
   std::vector<ShellSurface> shell_surface_;
+  double shell_volume_ = 0.0;  // [m^d]
+  // (pressure, volume) of the particles inside the shell at a sample (kept between samples).
+  std::vector<std::pair<double, double>> inside_pressure_;
   // The history, a function of the sampled rows.
   bool sampled_ = false;
   double last_time_ = 0.0;

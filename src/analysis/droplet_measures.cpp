@@ -6,10 +6,39 @@
 
 namespace partimix::analysis {
 
-double equivalent_diameter(double volume, int dimensions) {
-  if (dimensions == 2)
-    return 2.0 * std::sqrt(volume / std::numbers::pi);
-  return std::cbrt(6.0 * volume / std::numbers::pi);
+namespace {
+
+// The half layer u = t / 2 of a spherical shell: (outer + u)^3 - (inner - u)^3 = 3 V / (4 pi),
+// whose left side rises with u (its derivative 3 (outer + u)^2 + 3 (inner - u)^2 > 0), by
+// Newton's method from the root of its part linear in u.
+double spherical_half_layer(double inner, double outer, double shell_volume) {
+  const double target = 3.0 * shell_volume / (4.0 * std::numbers::pi);
+  const double cubed = outer * outer * outer - inner * inner * inner;
+  double u = (target - cubed) / (3.0 * (outer * outer + inner * inner));
+  for (int iteration = 0; iteration < 50; ++iteration) {
+    const double a = outer + u;
+    const double b = inner - u;
+    const double step = (a * a * a - b * b * b - target) / (3.0 * (a * a + b * b));
+    u -= step;
+    if (std::abs(step) <= 1e-15 * outer)
+      break;
+  }
+  return u;
+}
+
+}  // namespace
+
+double outline_diameter(double inner, double outer, double shell_volume, int dimensions) {
+  const bool valid = std::isfinite(inner) && std::isfinite(outer) && std::isfinite(shell_volume) &&
+                     inner > 0.0 && outer >= inner && shell_volume > 0.0;
+  if (!valid)
+    return std::numeric_limits<double>::quiet_NaN();
+  // 2D: pi ((outer + t/2)^2 - (inner - t/2)^2) = pi (outer + inner) (outer - inner + t).
+  const double half_layer =
+      dimensions == 2
+          ? 0.5 * (shell_volume / (std::numbers::pi * (outer + inner)) - (outer - inner))
+          : spherical_half_layer(inner, outer, shell_volume);
+  return 2.0 * (outer + half_layer);
 }
 
 double spacing_equivalent(double volume, int dimensions) {
@@ -18,6 +47,22 @@ double spacing_equivalent(double volume, int dimensions) {
 
 double WeightedMean::value() const {
   return weight_ > 0.0 ? weighted_sum_ / weight_ : std::numeric_limits<double>::quiet_NaN();
+}
+
+double weighted_median(std::vector<std::pair<double, double>>& pairs) {
+  if (pairs.empty())
+    return std::numeric_limits<double>::quiet_NaN();
+  std::ranges::sort(pairs);
+  double total = 0.0;
+  for (const auto& [value, weight] : pairs)
+    total += weight;
+  double reached = 0.0;
+  for (const auto& [value, weight] : pairs) {
+    reached += weight;
+    if (reached >= 0.5 * total)
+      return value;
+  }
+  return pairs.back().first;
 }
 
 void NearestSample::add(double time, double value) {

@@ -1,19 +1,23 @@
 #pragma once
 // The pure measures of the droplet analysis (docs/multi-material-sph.md, "The scheme", droplet
-// measurements; docs/case-reference.md, "analyses"): a droplet's equivalent diameter, a
-// particle's spacing-equivalent, a weighted mean, the sample nearest a time, and the labels of a
+// measurements; docs/case-reference.md, "analyses"): a shell's outline diameter, a particle's
+// spacing-equivalent, a weighted mean and median, the sample nearest a time, and the labels of a
 // shell's inner and outer surfaces.
 #include <limits>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "analysis/shell_rupture.hpp"
 
 namespace partimix::analysis {
 
-// The diameter of the disc of area `volume` (dimensions 2: D = 2 (A / pi)^(1/2)) or of the
-// sphere of volume `volume` (3: D = (6 V / pi)^(1/3)).
-double equivalent_diameter(double volume, int dimensions);
+// The outer diameter of a round shell whose inner and outer surface particles lie at the mean
+// distances `inner` <= `outer` from its centre and whose particles' volumes sum to
+// `shell_volume`: its surfaces lie half a layer t beyond those particles, t such that the ring
+// (dimensions 2) or spherical shell (3) between inner - t/2 and outer + t/2 holds shell_volume.
+// Returns 2 (outer + t/2); NaN unless inner, outer and shell_volume are finite and > 0.
+double outline_diameter(double inner, double outer, double shell_volume, int dimensions);
 
 // A particle's spacing-equivalent (m / rho)^(1/d), from its volume m / rho.
 double spacing_equivalent(double volume, int dimensions);
@@ -31,6 +35,10 @@ class WeightedMean {
   double weighted_sum_ = 0.0;
   double weight_ = 0.0;
 };
+
+// The weighted median of (value, weight > 0) pairs: the smallest value at which the weights of
+// the values up to it reach half the total; NaN without pairs. Sorts `pairs` by value.
+double weighted_median(std::vector<std::pair<double, double>>& pairs);
 
 // Of the samples given in time order, the value of the one nearest `target` (the earlier of two
 // as near), and whether a sample at or past the target has come: until then a later sample may
