@@ -43,6 +43,7 @@ sph:
       temperature: 288
       specific_heat: 1700
       conductivity: 0.03
+      surface_heat_flux: 4.0e7
     - name: fuel
       eos: {model: tait, reference_density: 800, sound_speed: 50}
       specific_heat: 2000
@@ -157,6 +158,7 @@ TEST(CaseMultiMaterial, RedlichKwongGasLoadsWithItsPressure) {
   EXPECT_DOUBLE_EQ(gas.viscosity, 0.0);
   EXPECT_DOUBLE_EQ(gas.surface_tension, 0.0);
   EXPECT_DOUBLE_EQ(gas.heat_source, 0.0);
+  EXPECT_DOUBLE_EQ(gas.surface_heat_flux, 4.0e7);
   EXPECT_FALSE(gas.solid.has_value());
 }
 
@@ -174,6 +176,7 @@ TEST(CaseMultiMaterial, TaitLiquidWithoutDensityStartsAtItsReferenceDensity) {
   EXPECT_DOUBLE_EQ(liquid.viscosity, 1.5e-3);
   EXPECT_DOUBLE_EQ(liquid.surface_tension, 0.025);
   EXPECT_DOUBLE_EQ(liquid.heat_source, -10.0);
+  EXPECT_DOUBLE_EQ(liquid.surface_heat_flux, 0.0);
   EXPECT_EQ(loaded.resolved["sph"]["materials"][1]["density"], 800.0);
 }
 

@@ -30,12 +30,14 @@ struct MaterialSpec {
   // following from the equation of state at the initial temperature.
   std::optional<double> density;
   std::optional<double> pressure;
-  double temperature = 293.15;     // initial T [K]
-  double specific_heat = 0.0;      // c_v [J/(kg K)], > 0
-  double viscosity = 0.0;          // dynamic viscosity [Pa s]
-  double conductivity = 0.0;       // k [W/(m K)]
-  double surface_tension = 0.0;    // sigma [N/m] on its boundary with the other materials
-  double heat_source = 0.0;        // volumetric heating [W/m^3]
+  double temperature = 293.15;   // initial T [K]
+  double specific_heat = 0.0;    // c_v [J/(kg K)], > 0
+  double viscosity = 0.0;        // dynamic viscosity [Pa s]
+  double conductivity = 0.0;     // k [W/(m K)]
+  double surface_tension = 0.0;  // sigma [N/m] on its boundary with the other materials
+  double heat_source = 0.0;      // volumetric heating [W/m^3]
+  // q'' [W/m^2] through the surfaces of its bodies (sph/multi_material/surface_heating.hpp).
+  double surface_heat_flux = 0.0;
   std::optional<SolidSpec> solid;  // absent: a fluid
 };
 

@@ -166,6 +166,7 @@ MaterialSpec read_material(Reader& item) {
   spec.surface_tension =
       item.optional<double>("surface_tension", spec.surface_tension, kNonNegative);
   spec.heat_source = item.optional<double>("heat_source", spec.heat_source);
+  spec.surface_heat_flux = item.optional<double>("surface_heat_flux", spec.surface_heat_flux);
   spec.solid = read_solid(item);
   item.done();
   return spec;

@@ -46,6 +46,13 @@ std::unique_ptr<Kernel> make_kernel(const std::string& name) {
   return kernel;
 }
 
+std::vector<double> surface_heat_fluxes(const MultiMaterialSettings& settings) {
+  std::vector<double> flux;
+  for (const MaterialSpec& spec : settings.materials)
+    flux.push_back(spec.surface_heat_flux);
+  return flux;
+}
+
 const std::vector<std::int32_t>& material_field(const ParticleStore& store) {
   const Field<std::int32_t>* field = store.find_integer("material");
   if (field == nullptr)
@@ -81,11 +88,12 @@ MultiMaterialSolver::MultiMaterialSolver(ParticleStore& store, const Domain& dom
       temperature_rate_(store.add_scalar("temperature_rate", "K/s", false).values),
       density_rate_(store.add_scalar("density_rate", "kg/(m^3 s)", false).values),
       stress_rate_normal_(store.add_vector("stress_rate_normal", "Pa/s", false).values),
-      stress_rate_shear_(store.add_vector("stress_rate_shear", "Pa/s", false).values) {
+      stress_rate_shear_(store.add_vector("stress_rate_shear", "Pa/s", false).values),
+      surface_heating_(surface_heat_fluxes(config.multi_material), domain.dimensions) {
   const std::size_t n = store_.size();
-  for (std::vector<double>* array :
-       {&omega_, &sound_speed_, &spacing_, &viscosity_, &conductivity_, &expansion_, &heating_,
-        &conduction_, &colour_, &curvature_, &raw_curvature_, &momentum_pressure_})
+  for (std::vector<double>* array : {&omega_, &sound_speed_, &spacing_, &viscosity_, &conductivity_,
+                                     &expansion_, &heating_, &conduction_, &colour_, &curvature_,
+                                     &raw_curvature_, &momentum_pressure_, &surface_source_})
     array->assign(n, 0.0);
   for (std::vector<Mat3>* array : {&stress_, &artificial_stress_, &velocity_gradient_})
     array->assign(n, Mat3::Zero());
@@ -339,10 +347,10 @@ void MultiMaterialSolver::add_surface_tension() {
   }
 }
 
-// c_v dT/dt = T (dp/dT)_rho epsilon + heating + conduction + q / rho + the ambient's heat
-// h (T_a - T) 2 |g| / rho, 2 |g| the surface per unit volume (the particles hold only the inner
-// half of the colour's step from 1 to 0) (docs/multi-material-sph.md, "The scheme");
-// drho/dt = rho^2 epsilon with the continuity pairing.
+// c_v dT/dt = T (dp/dT)_rho epsilon + heating + conduction + (q + q'' S / V) / rho + the ambient's
+// heat h (T_a - T) 2 |g| / rho, 2 |g| the surface per unit volume (the particles hold only the
+// inner half of the colour's step from 1 to 0) (docs/multi-material-sph.md, "The scheme").
+// With the continuity pairing, drho/dt = rho^2 epsilon.
 void MultiMaterialSolver::update_temperature_rates() {
   const std::size_t n = store_.size();
   std::fill(conduction_.begin(), conduction_.end(), 0.0);
@@ -350,6 +358,10 @@ void MultiMaterialSolver::update_temperature_rates() {
     add_conduction_rates(
         {store_.position(), h_, store_.mass(), density_, temperature_, conductivity_}, n, *grid_,
         scaled_, conduction_);
+  }
+  if (surface_heating_.any()) {
+    surface_heating_.update({store_.position(), h_, store_.mass(), density_, material_}, n, *grid_,
+                            surface_source_);
   }
   const Ambient& ambient = config_.multi_material.ambient;
   for (std::size_t i = 0; i < n; ++i) {
@@ -360,9 +372,9 @@ void MultiMaterialSolver::update_temperature_rates() {
         t * material_of(i).eos().pressure_temperature_derivative(rho, t) * expansion_[i];
     const double surface_heat = ambient.heat_transfer_coefficient * (ambient.temperature - t) *
                                 2.0 * unity_gradient_[i].norm() / rho;
-    temperature_rate_[i] =
-        (work + heating_[i] + conduction_[i] + spec.heat_source / rho + surface_heat) /
-        spec.specific_heat;
+    temperature_rate_[i] = (work + heating_[i] + conduction_[i] +
+                            (spec.heat_source + surface_source_[i]) / rho + surface_heat) /
+                           spec.specific_heat;
     density_rate_[i] = pairing_ == DensityPairing::continuity ? rho * rho * expansion_[i] : 0.0;
     // A total Lagrangian solid's density follows det F (deform_solids()); between evaluations
     // it moves at the rate of its own L.

@@ -2,7 +2,8 @@
 // The multi-material SPH scheme (docs/multi-material-sph.md, "The scheme"): compressible SPH
 // with several materials in one run (Tait liquids, ideal and Redlich-Kwong gases, Johnson-Cook
 // solids with damage), a variable smoothing length, the temperature from the energy equation
-// with heat conduction, a volumetric heat source and the ambient's heat through the free surface,
+// with heat conduction, volumetric heat sources, heat through the surfaces of a material's bodies
+// and the ambient's heat through the free surface,
 // surface tension, and the kick-drift-kick leapfrog.
 #include <memory>
 #include <optional>
@@ -16,6 +17,7 @@
 #include "sph/kernel_table.hpp"
 #include "sph/multi_material/material.hpp"
 #include "sph/multi_material/material_rates.hpp"
+#include "sph/multi_material/surface_heating.hpp"
 #include "sph/multi_material/total_lagrangian.hpp"
 #include "sph/scaled_kernel.hpp"
 
@@ -106,6 +108,7 @@ class MultiMaterialSolver final : public Solver {
   std::vector<double> omega_, sound_speed_, spacing_, viscosity_, conductivity_;
   std::vector<double> expansion_, heating_, conduction_, colour_, curvature_, raw_curvature_;
   std::vector<double> momentum_pressure_;  // pressure + the background pressure
+  std::vector<double> surface_source_;     // q'' S / V of SurfaceHeating [W/m^3]
   std::vector<Mat3> stress_, artificial_stress_, velocity_gradient_;
   std::vector<Vec3> unity_gradient_, colour_gradient_, normal_gradient_;
   HalfStep half_;
@@ -119,6 +122,7 @@ class MultiMaterialSolver final : public Solver {
   std::vector<Mat3> cauchy_;
   const std::vector<Vec3>* reference_ = nullptr;
 
+  SurfaceHeating surface_heating_;
   bool conducts_ = false;  // some material conducts heat
   double time_ = 0.0;
   std::size_t steps_ = 0;
