@@ -50,7 +50,10 @@ double WeightedMean::value() const {
 }
 
 double weighted_median(std::vector<std::pair<double, double>>& pairs) {
-  if (pairs.empty())
+  const bool finite = std::ranges::all_of(pairs, [](const auto& pair) {
+    return std::isfinite(pair.first) && std::isfinite(pair.second);
+  });
+  if (pairs.empty() || !finite)
     return std::numeric_limits<double>::quiet_NaN();
   std::ranges::sort(pairs);
   double total = 0.0;

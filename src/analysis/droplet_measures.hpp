@@ -37,7 +37,8 @@ class WeightedMean {
 };
 
 // The weighted median of (value, weight > 0) pairs: the smallest value at which the weights of
-// the values up to it reach half the total; NaN without pairs. Sorts `pairs` by value.
+// the values up to it reach half the total; NaN without pairs or with one not finite (which
+// could not be sorted). Sorts `pairs` by value.
 double weighted_median(std::vector<std::pair<double, double>>& pairs);
 
 // Of the samples given in time order, the value of the one nearest `target` (the earlier of two

@@ -2,9 +2,9 @@
 // measurements): the outline diameter of rings and spherical shells whose surfaces lie half a
 // layer beyond their outermost and innermost particles (four layers of 1 between radii 10 and 14:
 // particles at 10.5 and 13.5, D = 28), invalid input NaN; a spacing-equivalent is the d-th root
-// of the volume; weighted means, medians and the sample nearest a time by hand; and a shell's
-// surfaces from distances and spacings: inner within half a spacing of the smallest distance, outer
-// within half a spacing of the largest.
+// of the volume; weighted means, medians (NaN with a value not finite) and the sample nearest a
+// time by hand; and a shell's surfaces from distances and spacings: inner within half a spacing
+// of the smallest distance, outer within half a spacing of the largest.
 #include "analysis/droplet_measures.hpp"
 
 #include <gtest/gtest.h>
@@ -62,6 +62,8 @@ TEST(DropletMeasures, WeightedMedianByHandAndNaNWithoutPairs) {
   EXPECT_EQ(weighted_median(pairs), 1.0);
   pairs = {{1.0, 1.0}, {3.0, 1.5}};
   EXPECT_EQ(weighted_median(pairs), 3.0);
+  pairs = {{1.0, 1.0}, {std::nan(""), 1.0}, {3.0, 1.0}};
+  EXPECT_TRUE(std::isnan(weighted_median(pairs)));
 }
 
 TEST(DropletMeasures, NearestSampleWaitsForTheTarget) {
