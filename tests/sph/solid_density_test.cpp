@@ -11,6 +11,7 @@
 #include "particles/particle_store.hpp"
 #include "sph/multi_material/multi_material_solver.hpp"
 #include "support/elastic_solid.hpp"
+#include "support/multi_material_setup.hpp"
 
 namespace partimix::sph {
 namespace {
@@ -24,16 +25,10 @@ constexpr std::size_t kDamaged = 44;
 // The densities after a step of 1 ps taken once the block, laid at rest, is moved by `map`; its
 // particle kDamaged fully damaged.
 std::vector<double> densities_after_the_map(bool total_lagrangian, const Mat3& map) {
-  Domain domain;
-  domain.dimensions = 2;
-  domain.lo = Vec3(-0.01, -0.01, 0.0);
-  domain.hi = Vec3(0.03, 0.03, 0.0);
-  Config config;
-  config.scheme = "multi_material";
-  config.spacing = kSpacing;
+  const Domain domain = test_support::plane_domain(-0.01, -0.01, 0.03, 0.03);
   MaterialSpec solid = test_support::elastic_solid("block", kDensity, 1.0e7, 5.0e6, 0.0);
   solid.solid->total_lagrangian = total_lagrangian;
-  config.multi_material.materials = {solid};
+  const Config config = test_support::multi_material_config(kSpacing, {solid});
   ParticleStore store;
   for (int j = 0; j < kSide; ++j)
     for (int i = 0; i < kSide; ++i) {

@@ -22,6 +22,7 @@
 #include "particles/domain.hpp"
 #include "particles/particle_store.hpp"
 #include "sph/multi_material/multi_material_solver.hpp"
+#include "support/multi_material_setup.hpp"
 
 namespace partimix::sph {
 namespace {
@@ -171,14 +172,9 @@ MaterialSpec tait_fluid(const std::string& name, double surface_heat_flux) {
 
 TEST(SurfaceHeating, TheSolverHeatsEachBlockByItsOwnShare) {
   constexpr double kSpacing = 1e-3;
-  Domain domain;
-  domain.dimensions = 2;
-  domain.lo = Vec3(-0.01, -0.01, 0.0);
-  domain.hi = Vec3(0.04, 0.03, 0.0);
-  Config config;
-  config.scheme = "multi_material";
-  config.spacing = kSpacing;
-  config.multi_material.materials = {tait_fluid("liquid", 0.0), tait_fluid("gas", kFlux)};
+  const Domain domain = test_support::plane_domain(-0.01, -0.01, 0.04, 0.03);
+  const Config config = test_support::multi_material_config(
+      kSpacing, {tait_fluid("liquid", 0.0), tait_fluid("gas", kFlux)});
   ParticleStore store;
   std::vector<int> block;  // 0 for x < 10, 1 beyond, -1 liquid
   for (int j = 0; j < 12; ++j) {

@@ -30,6 +30,7 @@
 #include "particles/particle_store.hpp"
 #include "sph/multi_material/multi_material_solver.hpp"
 #include "support/elastic_solid.hpp"
+#include "support/multi_material_setup.hpp"
 
 namespace partimix::sph {
 namespace {
@@ -81,14 +82,9 @@ void lay_rings(ParticleStore& store, std::vector<std::int32_t>& material, int fi
 class LameRing : public ::testing::TestWithParam<bool> {};
 
 TEST_P(LameRing, HoopStressFollowsLame) {
-  Domain domain;
-  domain.dimensions = 2;
-  domain.lo = Vec3(-0.03, -0.03, 0.0);
-  domain.hi = Vec3(0.03, 0.03, 0.0);
-  Config config;
-  config.scheme = "multi_material";
-  config.spacing = kSpacing;
-  config.multi_material.materials = {ring_solid(GetParam()), pressurised_liquid()};
+  const Domain domain = test_support::plane_domain(-0.03, -0.03, 0.03, 0.03);
+  const Config config =
+      test_support::multi_material_config(kSpacing, {ring_solid(GetParam()), pressurised_liquid()});
   ParticleStore store;
   std::vector<std::int32_t> material;
   const int inner_rings = static_cast<int>(std::lround(kInner / kSpacing));

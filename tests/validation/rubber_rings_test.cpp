@@ -22,6 +22,7 @@
 #include "particles/particle_store.hpp"
 #include "sph/multi_material/multi_material_solver.hpp"
 #include "support/elastic_solid.hpp"
+#include "support/multi_material_setup.hpp"
 
 namespace partimix::sph {
 namespace {
@@ -66,14 +67,8 @@ struct Collision {
 };
 
 Collision collide(double epsilon, double duration) {
-  Domain domain;
-  domain.dimensions = 2;
-  domain.lo = Vec3(-0.15, -0.1, 0.0);
-  domain.hi = Vec3(0.15, 0.1, 0.0);
-  Config config;
-  config.scheme = "multi_material";
-  config.spacing = kSpacing;
-  config.multi_material.materials = {rubber(epsilon)};
+  const Domain domain = test_support::plane_domain(-0.15, -0.1, 0.15, 0.1);
+  const Config config = test_support::multi_material_config(kSpacing, {rubber(epsilon)});
   const double speed = 0.059 * sound_speed();
   ParticleStore store;
   const double gap = kOuter + kSpacing;
