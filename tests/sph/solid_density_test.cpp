@@ -30,15 +30,7 @@ std::vector<double> densities_after_the_map(bool total_lagrangian, const Mat3& m
   solid.solid->total_lagrangian = total_lagrangian;
   const Config config = test_support::multi_material_config(kSpacing, {solid});
   ParticleStore store;
-  for (int j = 0; j < kSide; ++j)
-    for (int i = 0; i < kSide; ++i) {
-      const std::size_t n = store.size();
-      store.resize(n + 1);
-      store.position()[n] = Vec3(i + 0.5, j + 0.5, 0.0) * kSpacing;
-      store.mass()[n] = kDensity * kSpacing * kSpacing;
-      store.id()[n] = static_cast<std::int64_t>(n);
-    }
-  store.add_integer("material", "");
+  test_support::square_block(store, kSide, kSpacing, kDensity);
   MultiMaterialSolver solver(store, domain, config, Vec3::Zero());
   store.find_scalar("damage")->values[kDamaged] = 1.0;
   for (Vec3& x : store.position())

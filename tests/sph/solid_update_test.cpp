@@ -6,10 +6,12 @@
 // elastic until sigma_eq = 3 G strain reaches A; then sigma_eq = (1 - D) sigma_y(r, dr/dt, T) of
 // eq. 11 to 1e-9 (with the damage of the step's start); the damage of eq. 12, summed step by step
 // at each step's p_f of eq. 13 at triaxiality 1/3, to 1e-9; and the point fails (D = 1, S = 0)
-// at the step where r passes p_f.
+// at the step where r passes p_f. A failed point stays at S = 0 under any strain, even with an
+// infinite flow stress (a solid that never yields), which once gave 0 x inf.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "materials/jaumann_rate.hpp"
 #include "materials/johnson_cook.hpp"
@@ -88,6 +90,23 @@ TEST(SolidUpdate, JohnsonCookBarFollowsEquations11To13) {
   EXPECT_TRUE(yielded);
   EXPECT_GE(point.damage, 1.0);
   EXPECT_NEAR(point.plastic_strain, failure, kRate * dt * 1.01);
+}
+
+TEST(SolidUpdate, FailedPointCarriesNoDeviatoricStress) {
+  for (const double yield :
+       {test_support::steel_4340().A, std::numeric_limits<double>::infinity()}) {
+    SolidSpec solid = steel();
+    solid.johnson_cook.A = yield;
+    SolidPoint point;
+    point.damage = 1.0;
+    Mat3 trial = Mat3::Zero();
+    trial(0, 1) = trial(1, 0) = 1.0e8;
+    const SolidStepResult result =
+        return_to_yield(solid, trial, -1.0e8, kTemperature, kDensity, 1e-6, point);
+    EXPECT_EQ(point.deviatoric_stress, Mat3::Zero()) << yield;
+    EXPECT_EQ(result.plastic_work, 0.0) << yield;
+    EXPECT_EQ(point.damage, 1.0) << yield;
+  }
 }
 
 }  // namespace

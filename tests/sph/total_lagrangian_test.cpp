@@ -59,8 +59,8 @@ class Patch : public ::testing::Test {
   }
 
   void evaluate() {
-    const BondedParticles p{position, velocity, reference, mass,     volume,
-                            h,        bonded,   stress,    hourglass};
+    const BondedParticles p{position, velocity, reference, mass,      volume,
+                            h,        bonded,   stress,    hourglass, {}};
     TotalLagrangianSolids solids(domain, scaled, kH);
     acceleration.assign(position.size(), Vec3::Zero());
     solids.refer(p, position.size());

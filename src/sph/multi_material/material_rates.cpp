@@ -23,6 +23,11 @@ Mat3 stress(const MaterialParticles& p, std::size_t k) {
   return p.deviatoric_stress[k] - p.pressure[k] * Mat3::Identity();
 }
 
+// The pressure of particle k across a cut bond: max(p, 0), so that it pushes but never pulls.
+double contact_pressure(const MaterialParticles& p, std::size_t k) {
+  return std::max(p.pressure[k], 0.0);
+}
+
 // The artificial stress's pair weight f_ij^4, f_ij = W(r, h) / W(dp, h).
 double repulsion_weight(const ScaledKernel& kernel, double r, double h, double spacing) {
   const double at_spacing = kernel.value(spacing, h);
@@ -87,26 +92,33 @@ void material_rates(const MaterialParticles& p, std::size_t count, const CellGri
           const Vec3 vij = p.velocity[i] - p.velocity[j];
           const double mj = p.mass[j];
           const double cross = 1.0 / (p.density[i] * p.density[j]);
-          // A bonded pair's stress force is the total Lagrangian one (total_lagrangian.hpp).
-          const bool bonded = p.bonds != nullptr && bonded_pair(*p.bonds, i, j, support);
-          const Mat3 sigma_j = stress(p, j);
+          // An intact bond's stress force is the total Lagrangian one (total_lagrangian.hpp), a
+          // cut one's is a contact.
+          const Bond bond = p.bonds != nullptr ? p.bonds->state(i, j) : Bond::none;
           if (summation) {
             const double other_weight = 1.0 / (p.omega[j] * p.density[j] * p.density[j]);
-            if (!bonded) {
+            if (bond == Bond::none) {
               sums.acceleration +=
-                  mj * (own_weight * sigma_i * grad_i + other_weight * sigma_j * grad_j);
+                  mj * (own_weight * sigma_i * grad_i + other_weight * stress(p, j) * grad_j);
+            } else if (bond == Bond::cut) {
+              sums.acceleration -= mj * (own_weight * contact_pressure(p, i) * grad_i +
+                                         other_weight * contact_pressure(p, j) * grad_j);
             }
             sums.expansion += mj * own_weight * vij.dot(grad_i);
           } else {
-            if (!bonded)
-              sums.acceleration += mj * cross * (sigma_i + sigma_j) * grad;
+            if (bond == Bond::none) {
+              sums.acceleration += mj * cross * (sigma_i + stress(p, j)) * grad;
+            } else if (bond == Bond::cut) {
+              sums.acceleration -=
+                  mj * cross * (contact_pressure(p, i) + contact_pressure(p, j)) * grad;
+            }
             sums.expansion += mj * cross * vij.dot(grad);
           }
           const double pi = artificial_viscosity(p, i, j, rij, r2, h, av);
           sums.acceleration -= mj * pi * grad;
           // The artificial stress acts between solids only, and not between bonded ones; fluids
           // skip its two kernel lookups.
-          if (!bonded && (i_stressed || !p.artificial_stress[j].isZero())) {
+          if (bond == Bond::none && (i_stressed || !p.artificial_stress[j].isZero())) {
             const double dp = 0.5 * (p.spacing[i] + p.spacing[j]);
             sums.acceleration += mj * repulsion_weight(kernel, r, h, dp) *
                                  (p.artificial_stress[i] + p.artificial_stress[j]) * grad;

@@ -24,13 +24,15 @@
 //   - g_i = sum_j m_j / rho_j grad W-bar, the gradient of unity: 0 inside, |g_i| the surface
 //     per unit volume at a free surface (the ambient's heat flux).
 // Pairs of bonded total Lagrangian solid particles skip the stress and artificial stress terms:
-// their stress force is total_lagrangian.hpp's.
+// their stress force is total_lagrangian.hpp's. A pair whose bond a crack has cut (bond_table.hpp)
+// acts by contact alone: -(max(p_i, 0) + max(p_j, 0)) in place of sigma_i + sigma_j, no
+// artificial stress, so that the faces of a crack push but do not pull.
 #include <cstddef>
 #include <span>
 
 #include "core/vec.hpp"
 #include "particles/cell_grid.hpp"
-#include "sph/multi_material/total_lagrangian.hpp"
+#include "sph/multi_material/bond_table.hpp"
 #include "sph/scaled_kernel.hpp"
 
 namespace partimix::sph {
@@ -50,9 +52,9 @@ struct MaterialParticles {
   std::span<const double> spacing;          // dp of f_ij, the particle's (m / rho)^(1/d)
   std::span<const double> sound_speed;      // [m/s]
   std::span<const double> viscosity;        // dynamic [Pa s]
-  // The total Lagrangian solids' bonds, whose pairs skip the stress and artificial stress terms
-  // here; null without such solids.
-  const BondedParticles* bonds = nullptr;
+  // The total Lagrangian solids' bonds: intact ones skip the stress and artificial stress terms
+  // here, cut ones act by contact; null without such solids.
+  const BondTable* bonds = nullptr;
 };
 
 struct ArtificialViscosity {

@@ -164,7 +164,7 @@ void MultiMaterialSolver::set_up_total_lagrangian() {
 
 BondedParticles MultiMaterialSolver::bonded_particles() const {
   return {store_.position(), store_.velocity(), *reference_, store_.mass(), reference_volume_,
-          reference_h_,      bonded_,           cauchy_,     hourglass_};
+          reference_h_,      bonded_,           cauchy_,     hourglass_,    damage_};
 }
 
 // F and L of the total Lagrangian solids, and their density from F.
@@ -184,8 +184,7 @@ void MultiMaterialSolver::take_solid_densities() {
 }
 
 // Whether particle i's density comes from its F: a total Lagrangian solid's particle, unless
-// fully damaged. Its bonds never break, so once torn apart its F, taken from bonds across the
-// tear, can fold to a vanishing or negative determinant; it keeps the continuity density.
+// fully damaged; a failed particle has no bonds to take F from and keeps the continuity density.
 bool MultiMaterialSolver::density_follows_deformation(std::size_t i) const {
   return total_lagrangian_ && bonded_[i] && damage_[i] < 1.0;
 }
@@ -194,11 +193,12 @@ bool MultiMaterialSolver::density_follows_deformation(std::size_t i) const {
 // forces; after deform_solids().
 void MultiMaterialSolver::add_total_lagrangian_forces() {
   const std::span<const Mat3> rate = total_lagrangian_->velocity_gradient();
+  const BondedParticles bonded = bonded_particles();
   for (std::size_t i = 0; i < store_.size(); ++i) {
-    if (bonded_[i])
+    if (total_lagrangian_->holds(bonded, i))
       velocity_gradient_[i] = rate[i];
   }
-  total_lagrangian_->add_forces(bonded_particles(), store_.size(), acceleration_);
+  total_lagrangian_->add_forces(bonded, store_.size(), acceleration_);
 }
 
 // The largest radius a grid may have: a third of the shortest periodic axis.
@@ -234,16 +234,13 @@ void MultiMaterialSolver::evaluate() {
     deform_solids();
   update_state();
   const std::size_t n = store_.size();
-  std::optional<BondedParticles> bonds;
-  if (total_lagrangian_)
-    bonds = bonded_particles();
   MaterialParticles particles{store_.position(),  store_.velocity(),
                               store_.mass(),      h_,
                               density_,           omega_,
                               momentum_pressure_, stress_,
                               artificial_stress_, spacing_,
                               sound_speed_,       viscosity_};
-  particles.bonds = bonds ? &*bonds : nullptr;
+  particles.bonds = total_lagrangian_ ? &total_lagrangian_->bonds() : nullptr;
   material_rates(particles, n, *grid_, scaled_, pairing_, artificial_viscosity_,
                  {acceleration_, expansion_, heating_, velocity_gradient_, unity_gradient_});
   if (total_lagrangian_)
@@ -424,7 +421,7 @@ void MultiMaterialSolver::update_stable_dt() {
 // are taken with the velocity, density, temperature and stress predicted to the step's end,
 // then the second half kick starts again from the half step's values. Total Lagrangian solids
 // take their density from F at the step's end positions, those of the evaluation. The solids
-// then return to their yield surface and accumulate damage.
+// then return to their yield surface and accumulate damage, and the fully damaged ones crack.
 void MultiMaterialSolver::step(double dt) {
   kick(0.5 * dt);
   drift(dt);
@@ -436,6 +433,8 @@ void MultiMaterialSolver::step(double dt) {
   if (total_lagrangian_)
     take_solid_densities();
   yield_solids(dt);
+  if (total_lagrangian_)
+    total_lagrangian_->crack(bonded_particles(), store_.size());
   write_stress_fields();
   time_ += dt;
   ++steps_;

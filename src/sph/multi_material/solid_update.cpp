@@ -10,6 +10,12 @@ namespace partimix::sph {
 
 SolidStepResult return_to_yield(const SolidSpec& solid, const Mat3& trial, double pressure,
                                 double temperature, double density, double dt, SolidPoint& point) {
+  // A fully damaged point carries no deviatoric stress, whatever its flow stress (an infinite
+  // one, a solid that never yields, would give 0 x inf).
+  if (point.damage >= 1.0) {
+    point.deviatoric_stress.setZero();
+    return {};
+  }
   const materials::JohnsonCookParameters& jc = solid.johnson_cook;
   // The yield function's state, which its closure holds by one reference: small enough for
   // std::function to keep without allocating.

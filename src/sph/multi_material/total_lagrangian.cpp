@@ -1,5 +1,6 @@
 #include "sph/multi_material/total_lagrangian.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace partimix::sph {
@@ -23,19 +24,18 @@ TotalLagrangianSolids::TotalLagrangianSolids(const Domain& domain, const ScaledK
       dimensions_(domain.dimensions),
       grid_(domain, kernel.support() * largest_h0) {}
 
-// Calls fn(j, X_ij, grad0 W_ij) for every particle j bonded to i.
+// Calls fn(j, X_ij, grad0 W_ij) for every particle j whose bond to i is intact.
 template <class Fn>
 void TotalLagrangianSolids::for_each_bond(const BondedParticles& p, std::size_t i, Fn&& fn) const {
-  grid_.for_each_neighbour(i, p.reference, [&](std::size_t j, const Vec3& xij, double r2) {
-    if (j == i || !bonded_pair(p, i, j, kernel_.support()))
-      return;
-    const double r = std::sqrt(r2);
+  bonds_.for_each_intact(i, [&](std::size_t j) {
+    const Vec3 xij = p.reference[i] - p.reference[j];
+    const double r = xij.norm();
     const double h = 0.5 * (p.reference_h[i] + p.reference_h[j]);
     fn(j, xij, (kernel_.derivative(r, h) / r) * xij);
   });
 }
 
-// Calls fn(i) for every bonded particle of [0, count), in parallel.
+// Calls fn(i) for every particle of [0, count) bonded now, in parallel.
 template <class Fn>
 void TotalLagrangianSolids::for_each_bonded(const BondedParticles& p, std::size_t count,
                                             Fn&& fn) const {
@@ -43,16 +43,46 @@ void TotalLagrangianSolids::for_each_bonded(const BondedParticles& p, std::size_
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
     const auto i = static_cast<std::size_t>(ii);
-    if (p.bonded[i])
+    if (holds(p, i))
       fn(i);
   }
 }
 
 void TotalLagrangianSolids::refer(const BondedParticles& p, std::size_t count) {
   grid_.build(p.reference);
-  correction_.assign(count, Mat3::Identity());
+  bonds_.build(grid_, p.reference, p.reference_h, p.bonded, kernel_.support());
   deformation_.assign(count, Mat3::Identity());
   velocity_gradient_.assign(count, Mat3::Zero());
+  for (std::size_t k = 0; k < std::min(count, p.damage.size()); ++k) {
+    if (p.bonded[k] && p.damage[k] >= 1.0)
+      fail(p, k);
+  }
+  take_corrections(p, count);
+}
+
+void TotalLagrangianSolids::crack(const BondedParticles& p, std::size_t count) {
+  bool cracked = false;
+  for (std::size_t k = 0; k < std::min(count, p.damage.size()); ++k) {
+    if (holds(p, k) && p.damage[k] >= 1.0) {
+      fail(p, k);
+      cracked = true;
+    }
+  }
+  if (cracked)
+    take_corrections(p, count);
+}
+
+// Fails particle k, whose crack is the disc of half its reference spacing, (V0 / depth)^(1/d) / 2.
+void TotalLagrangianSolids::fail(const BondedParticles& p, std::size_t k) {
+  const double spacing = std::pow(p.reference_volume[k], 1.0 / dimensions_);
+  bonds_.fail(k, p.reference, 0.5 * spacing);
+  deformation_[k] = Mat3::Identity();
+  velocity_gradient_[k] = Mat3::Zero();
+}
+
+// Each bonded particle's B^-1 from its intact bonds.
+void TotalLagrangianSolids::take_corrections(const BondedParticles& p, std::size_t count) {
+  correction_.assign(count, Mat3::Identity());
   for_each_bonded(p, count, [&](std::size_t i) {
     Mat3 moment = Mat3::Zero();
     for_each_bond(p, i, [&](std::size_t j, const Vec3& reference_ij, const Vec3& grad) {
@@ -82,7 +112,7 @@ void TotalLagrangianSolids::add_forces(const BondedParticles& p, std::size_t cou
                                        std::span<Vec3> acceleration) {
   piola_.assign(count, Mat3::Zero());
   for (std::size_t i = 0; i < count; ++i) {
-    if (!p.bonded[i])
+    if (!holds(p, i))
       continue;
     const Mat3& f = deformation_[i];
     piola_[i] = f.determinant() * p.stress[i] * f.inverse().transpose();

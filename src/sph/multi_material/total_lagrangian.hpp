@@ -17,15 +17,18 @@
 // c_ij the mean of the two particles' hourglass stiffnesses c = alpha E:
 //   m_i dv_i/dt += 1/2 c_ij V0_i V0_j W0_ij / |X_ij|^2 (delta_ij^i + delta_ij^j) x_ij / |x_ij|.
 // In 2D B and F have 1 at zz; B is inverted wherever |det B| >= 1e-3. The solver takes a bonded
-// particle's density from F, rho = m / (V0 det F). The pairs of other particles, and of bonded
-// particles not bonded to each other, stay updated Lagrangian
-// (sph/multi_material/material_rates.hpp). Needs a domain without periodic axes.
+// particle's density from F, rho = m / (V0 det F). The bonds are bond_table.hpp's: a fully damaged
+// particle fails, its bonds and those across it are cut, and B, F and the forces then take the
+// intact bonds alone; a failed particle has F = I and L = 0 here and is updated Lagrangian in the
+// solver. The pairs of other particles stay updated Lagrangian, and cut bonds act by contact
+// alone (sph/multi_material/material_rates.hpp). Needs a domain without periodic axes.
 #include <cstdint>
 #include <span>
 #include <vector>
 
 #include "core/vec.hpp"
 #include "particles/cell_grid.hpp"
+#include "sph/multi_material/bond_table.hpp"
 #include "sph/scaled_kernel.hpp"
 
 namespace partimix::sph {
@@ -40,29 +43,31 @@ struct BondedParticles {
   std::span<const std::uint8_t> bonded;      // 1: a particle of a total Lagrangian solid
   std::span<const Mat3> stress;              // Cauchy sigma [Pa]
   std::span<const double> hourglass;         // c = alpha E [Pa]
+  std::span<const double> damage;            // a particle at 1 fails; empty: none has
 };
-
-// Whether i and j, both bonded particles, are bonded to each other: |X_ij| below the support
-// of their mean reference smoothing length.
-inline bool bonded_pair(const BondedParticles& p, std::size_t i, std::size_t j, double support) {
-  const double reach = 0.5 * support * (p.reference_h[i] + p.reference_h[j]);
-  return p.bonded[i] && p.bonded[j] &&
-         (p.reference[i] - p.reference[j]).squaredNorm() < reach * reach;
-}
 
 class TotalLagrangianSolids {
  public:
   // largest_h0: the largest reference smoothing length, for the reference configuration's grid.
   TotalLagrangianSolids(const Domain& domain, const ScaledKernel& kernel, double largest_h0);
 
-  // Lays out the reference positions' grid and each bonded particle's B^-1, which depend on the
-  // reference configuration alone: once, and again when the particles are restored.
+  // Lays out the reference positions' grid and the bonds, fails the fully damaged particles and
+  // takes each bonded particle's B^-1: once, and again when the particles are restored (which
+  // bonds are cut follows from the damage alone).
   void refer(const BondedParticles& p, std::size_t count);
+  // Fails the particles that became fully damaged since the last call and takes B^-1 again from
+  // the intact bonds; after each step's damage.
+  void crack(const BondedParticles& p, std::size_t count);
   // F and L of the bonded particles of [0, count); after refer().
   void deform(const BondedParticles& p, std::size_t count);
   // The bonded pairs' stress and hourglass forces, added to acceleration; after deform().
   void add_forces(const BondedParticles& p, std::size_t count, std::span<Vec3> acceleration);
 
+  const BondTable& bonds() const { return bonds_; }
+  // Whether particle i is bonded now: flagged, and not failed.
+  bool holds(const BondedParticles& p, std::size_t i) const {
+    return p.bonded[i] && !bonds_.failed(i);
+  }
   // F and L after deform(), I and 0 for particles that are not bonded.
   std::span<const Mat3> deformation_gradient() const { return deformation_; }
   std::span<const Mat3> velocity_gradient() const { return velocity_gradient_; }
@@ -72,10 +77,13 @@ class TotalLagrangianSolids {
   void for_each_bonded(const BondedParticles& p, std::size_t count, Fn&& fn) const;
   template <class Fn>
   void for_each_bond(const BondedParticles& p, std::size_t i, Fn&& fn) const;
+  void fail(const BondedParticles& p, std::size_t k);
+  void take_corrections(const BondedParticles& p, std::size_t count);
 
   const ScaledKernel& kernel_;
   int dimensions_;
-  CellGrid grid_;                        // of the reference positions
+  CellGrid grid_;  // of the reference positions
+  BondTable bonds_;
   std::vector<Mat3> deformation_;        // F
   std::vector<Mat3> velocity_gradient_;  // L
   std::vector<Mat3> correction_;         // B^-1
