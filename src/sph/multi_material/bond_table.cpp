@@ -43,6 +43,12 @@ Bond BondTable::state(std::size_t i, std::size_t j) const {
   return Bond::none;
 }
 
+bool BondTable::lost_bonds(std::size_t i) const {
+  return std::any_of(cut_.begin() + static_cast<std::ptrdiff_t>(first_[i]),
+                     cut_.begin() + static_cast<std::ptrdiff_t>(first_[i + 1]),
+                     [](std::uint8_t c) { return c != 0; });
+}
+
 void BondTable::cut(std::size_t i, std::size_t j) {
   for (std::size_t b = first_[i]; b < first_[i + 1]; ++b) {
     if (partner_[b] == j)

@@ -30,6 +30,8 @@ class BondTable {
   void fail(std::size_t k, std::span<const Vec3> reference, double radius);
 
   bool failed(std::size_t i) const { return failed_[i] != 0; }
+  // Whether any of i's bonds is cut.
+  bool lost_bonds(std::size_t i) const;
   // Whether i and j were bonded at the start, and if so whether the bond is cut.
   Bond state(std::size_t i, std::size_t j) const;
   // Calls fn(j) for every particle j whose bond to i is intact.

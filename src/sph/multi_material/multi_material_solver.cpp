@@ -433,8 +433,10 @@ void MultiMaterialSolver::step(double dt) {
   if (total_lagrangian_)
     take_solid_densities();
   yield_solids(dt);
-  if (total_lagrangian_)
+  if (total_lagrangian_) {
     total_lagrangian_->crack(bonded_particles(), store_.size());
+    fail_loosened();
+  }
   write_stress_fields();
   time_ += dt;
   ++steps_;
@@ -495,6 +497,15 @@ void MultiMaterialSolver::yield_solids(double dt) {
   }
 }
 
+// The particles a crack left too few bonds to hold (total_lagrangian.hpp) count as fully damaged,
+// with no deviatoric stress.
+void MultiMaterialSolver::fail_loosened() {
+  for (const std::size_t k : total_lagrangian_->loosened()) {
+    damage_[k] = 1.0;
+    stress_[k].setZero();
+  }
+}
+
 void MultiMaterialSolver::write_stress_fields() {
   for (std::size_t i = 0; i < store_.size(); ++i) {
     stress_normal_[i] = normal_part(stress_[i]);
@@ -542,8 +553,10 @@ void MultiMaterialSolver::restore(const StateArchive& archive, const std::string
   stable_dt_ = archive.scalar(prefix + "stable_dt");
   grid_.emplace(domain_, archive.scalar(prefix + "grid_radius"));
   read_stress_fields();
-  if (total_lagrangian_)
+  if (total_lagrangian_) {
     total_lagrangian_->refer(bonded_particles(), store_.size());
+    fail_loosened();
+  }
 }
 
 }  // namespace partimix::sph

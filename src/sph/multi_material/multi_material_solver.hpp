@@ -71,6 +71,7 @@ class MultiMaterialSolver final : public Solver {
   void kick(double dt);
   void drift(double dt);
   void yield_solids(double dt);
+  void fail_loosened();
   void keep_half_step();
   void return_to_half_step();
   void write_stress_fields();

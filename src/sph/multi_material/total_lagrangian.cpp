@@ -1,5 +1,6 @@
 #include "sph/multi_material/total_lagrangian.hpp"
 
+#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 
@@ -8,6 +9,10 @@ namespace {
 
 // Below this |det B| (1 on a full lattice) a particle has too few bonds to correct: B^-1 = I.
 constexpr double kSmallestMoment = 1e-3;
+// A particle that lost bonds to a crack fails when the smallest singular value of its B falls
+// below this (1 on a full lattice, 0.5 at a straight free surface, 0.13-0.18 at the corners
+// where a crack meets the droplet's shell surface; docs/multi-material-sph.md, "Cracks").
+constexpr double kLeastLooseMoment = 0.1;
 
 // A 2D tensor's empty zz entry set to 1, so that it inverts and its determinant is the area's.
 Mat3 with_unit_zz(Mat3 m, int dimensions) {
@@ -53,6 +58,7 @@ void TotalLagrangianSolids::refer(const BondedParticles& p, std::size_t count) {
   bonds_.build(grid_, p.reference, p.reference_h, p.bonded, kernel_.support());
   deformation_.assign(count, Mat3::Identity());
   velocity_gradient_.assign(count, Mat3::Zero());
+  loosened_.clear();
   for (std::size_t k = 0; k < std::min(count, p.damage.size()); ++k) {
     if (p.bonded[k] && p.damage[k] >= 1.0)
       fail(p, k);
@@ -61,6 +67,7 @@ void TotalLagrangianSolids::refer(const BondedParticles& p, std::size_t count) {
 }
 
 void TotalLagrangianSolids::crack(const BondedParticles& p, std::size_t count) {
+  loosened_.clear();
   bool cracked = false;
   for (std::size_t k = 0; k < std::min(count, p.damage.size()); ++k) {
     if (holds(p, k) && p.damage[k] >= 1.0) {
@@ -80,18 +87,36 @@ void TotalLagrangianSolids::fail(const BondedParticles& p, std::size_t k) {
   velocity_gradient_[k] = Mat3::Zero();
 }
 
-// Each bonded particle's B^-1 from its intact bonds.
+// Each bonded particle's B^-1 from its intact bonds. A particle that lost bonds to a crack and
+// whose B has a singular value below kLeastLooseMoment fails too (it is loosened), and B^-1 is
+// taken again, until none is loose: failing only cuts bonds, which only lowers B, so the
+// particles loosened depend on which have failed, not on the order.
 void TotalLagrangianSolids::take_corrections(const BondedParticles& p, std::size_t count) {
-  correction_.assign(count, Mat3::Identity());
-  for_each_bonded(p, count, [&](std::size_t i) {
-    Mat3 moment = Mat3::Zero();
-    for_each_bond(p, i, [&](std::size_t j, const Vec3& reference_ij, const Vec3& grad) {
-      moment -= p.reference_volume[j] * reference_ij * grad.transpose();
+  for (;;) {
+    correction_.assign(count, Mat3::Identity());
+    loose_.assign(count, 0);
+    for_each_bonded(p, count, [&](std::size_t i) {
+      Mat3 moment = Mat3::Zero();
+      for_each_bond(p, i, [&](std::size_t j, const Vec3& reference_ij, const Vec3& grad) {
+        moment -= p.reference_volume[j] * reference_ij * grad.transpose();
+      });
+      moment = with_unit_zz(moment, dimensions_);
+      if (bonds_.lost_bonds(i) &&
+          Eigen::JacobiSVD<Mat3>(moment).singularValues().minCoeff() < kLeastLooseMoment)
+        loose_[i] = 1;
+      else if (std::abs(moment.determinant()) >= kSmallestMoment)
+        correction_[i] = moment.inverse();
     });
-    moment = with_unit_zz(moment, dimensions_);
-    if (std::abs(moment.determinant()) >= kSmallestMoment)
-      correction_[i] = moment.inverse();
-  });
+    const std::size_t before = loosened_.size();
+    for (std::size_t k = 0; k < count; ++k) {
+      if (loose_[k]) {
+        fail(p, k);
+        loosened_.push_back(k);
+      }
+    }
+    if (loosened_.size() == before)
+      return;
+  }
 }
 
 void TotalLagrangianSolids::deform(const BondedParticles& p, std::size_t count) {

@@ -19,9 +19,10 @@
 // In 2D B and F have 1 at zz; B is inverted wherever |det B| >= 1e-3. The solver takes a bonded
 // particle's density from F, rho = m / (V0 det F). The bonds are bond_table.hpp's: a fully damaged
 // particle fails, its bonds and those across it are cut, and B, F and the forces then take the
-// intact bonds alone; a failed particle has F = I and L = 0 here and is updated Lagrangian in the
-// solver. The pairs of other particles stay updated Lagrangian, and cut bonds act by contact
-// alone (sph/multi_material/material_rates.hpp). Needs a domain without periodic axes.
+// intact bonds alone; a particle a crack leaves too few bonds to span the space (a singular
+// value of B below 0.1) fails as well. A failed particle has F = I and L = 0 here and is updated
+// Lagrangian in the solver. The pairs of other particles stay updated Lagrangian, and cut bonds act
+// by contact alone (sph/multi_material/material_rates.hpp). Needs a domain without periodic axes.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -56,8 +57,12 @@ class TotalLagrangianSolids {
   // bonds are cut follows from the damage alone).
   void refer(const BondedParticles& p, std::size_t count);
   // Fails the particles that became fully damaged since the last call and takes B^-1 again from
-  // the intact bonds; after each step's damage.
+  // the intact bonds, failing the particles a crack left too few bonds (loosened()); after each
+  // step's damage.
   void crack(const BondedParticles& p, std::size_t count);
+  // The particles the last refer() or crack() failed for want of bonds, not of damage: the
+  // solver counts them fully damaged.
+  std::span<const std::size_t> loosened() const { return loosened_; }
   // F and L of the bonded particles of [0, count); after refer().
   void deform(const BondedParticles& p, std::size_t count);
   // The bonded pairs' stress and hourglass forces, added to acceleration; after deform().
@@ -87,7 +92,9 @@ class TotalLagrangianSolids {
   std::vector<Mat3> deformation_;        // F
   std::vector<Mat3> velocity_gradient_;  // L
   std::vector<Mat3> correction_;         // B^-1
-  std::vector<Mat3> piola_;              // P = J sigma F^-T
+  std::vector<std::uint8_t> loose_;      // take_corrections()' particles to fail
+  std::vector<std::size_t> loosened_;
+  std::vector<Mat3> piola_;  // P = J sigma F^-T
 };
 
 }  // namespace partimix::sph
