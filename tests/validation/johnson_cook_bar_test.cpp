@@ -156,11 +156,18 @@ struct BarTest {
   double gauge_length = 0.0;         // at the start
 };
 
-// Whether some cross-section of the bar has failed through: all its particles fully damaged.
+// Whether some cross-section of the bar has failed through: all its particles failed, fully
+// damaged or loosened by the crack (docs/multi-material-sph.md, "Cracks"): a loosened particle
+// keeps its damage but carries no deviatoric stress, S = 0 exactly once it has flowed.
 bool parted(const BarTest& bar, std::span<const double> damage) {
+  const ParticleStore& store = bar.store;
+  const auto& plastic = store.find_scalar("plastic_strain")->values;
+  const auto& normal = store.find_vector("deviatoric_stress_normal")->values;
+  const auto& shear = store.find_vector("deviatoric_stress_shear")->values;
   std::vector<int> failed(kAlong, 0);
   for (std::size_t i = 0; i < damage.size(); ++i) {
-    if (damage[i] >= 1.0)
+    const bool unloaded = plastic[i] > 0.0 && normal[i].isZero(0.0) && shear[i].isZero(0.0);
+    if (damage[i] >= 1.0 || unloaded)
       ++failed[static_cast<std::size_t>((bar.reference[i] + half_length()) / kSpacing)];
   }
   return std::ranges::any_of(failed, [](int count) { return count == kAcross * kAcross; });

@@ -184,9 +184,15 @@ void MultiMaterialSolver::take_solid_densities() {
 }
 
 // Whether particle i's density comes from its F: a total Lagrangian solid's particle, unless
-// fully damaged; a failed particle has no bonds to take F from and keeps the continuity density.
+// broken; a failed particle has no bonds to take F from and keeps the continuity density.
 bool MultiMaterialSolver::density_follows_deformation(std::size_t i) const {
-  return total_lagrangian_ && bonded_[i] && damage_[i] < 1.0;
+  return total_lagrangian_ && bonded_[i] && !broken(i);
+}
+
+// Whether particle i carries no deviatoric stress and, in tension, no pressure: fully damaged,
+// or a total Lagrangian solid's particle that a crack loosened (total_lagrangian.hpp).
+bool MultiMaterialSolver::broken(std::size_t i) const {
+  return damage_[i] >= 1.0 || (total_lagrangian_ && total_lagrangian_->failed(i));
 }
 
 // The total Lagrangian solids' L, replacing the updated Lagrangian one, and their bonded pairs'
@@ -299,7 +305,7 @@ void MultiMaterialSolver::update_state() {
     const Material& material = material_of(i);
     const MaterialSpec& spec = material.spec();
     double gauge = material.absolute_pressure(rho, t) - ambient;
-    if (damage_[i] >= 1.0)
+    if (broken(i))
       gauge = std::max(gauge, 0.0);
     pressure_[i] = gauge;
     momentum_pressure_[i] = gauge + config_.multi_material.background_pressure;
@@ -383,7 +389,7 @@ void MultiMaterialSolver::update_temperature_rates() {
 void MultiMaterialSolver::update_stress_rates() {
   for (std::size_t i = 0; i < store_.size(); ++i) {
     const auto& solid = material_of(i).spec().solid;
-    const Mat3 rate = solid && damage_[i] < 1.0
+    const Mat3 rate = solid && !broken(i)
                           ? materials::jaumann_stress_rate(stress_[i], velocity_gradient_[i],
                                                            solid->shear_modulus)
                           : Mat3::Zero();
@@ -435,7 +441,7 @@ void MultiMaterialSolver::step(double dt) {
   yield_solids(dt);
   if (total_lagrangian_) {
     total_lagrangian_->crack(bonded_particles(), store_.size());
-    fail_loosened();
+    unload_loosened();
   }
   write_stress_fields();
   time_ += dt;
@@ -487,6 +493,10 @@ void MultiMaterialSolver::yield_solids(double dt) {
     const MaterialSpec& spec = material_of(i).spec();
     if (!spec.solid)
       continue;
+    if (broken(i)) {
+      stress_[i].setZero();
+      continue;
+    }
     SolidPoint point{stress_[i], plastic_strain_[i], damage_[i]};
     const SolidStepResult result = return_to_yield(*spec.solid, stress_[i], pressure_[i],
                                                    temperature_[i], density_[i], dt, point);
@@ -497,13 +507,11 @@ void MultiMaterialSolver::yield_solids(double dt) {
   }
 }
 
-// The particles a crack left too few bonds to hold (total_lagrangian.hpp) count as fully damaged,
-// with no deviatoric stress.
-void MultiMaterialSolver::fail_loosened() {
-  for (const std::size_t k : total_lagrangian_->loosened()) {
-    damage_[k] = 1.0;
+// The particles a crack left too few bonds to hold (total_lagrangian.hpp) are broken from now on:
+// they shed their deviatoric stress, and keep their damage.
+void MultiMaterialSolver::unload_loosened() {
+  for (const std::size_t k : total_lagrangian_->loosened())
     stress_[k].setZero();
-  }
 }
 
 void MultiMaterialSolver::write_stress_fields() {
@@ -555,7 +563,7 @@ void MultiMaterialSolver::restore(const StateArchive& archive, const std::string
   read_stress_fields();
   if (total_lagrangian_) {
     total_lagrangian_->refer(bonded_particles(), store_.size());
-    fail_loosened();
+    unload_loosened();
   }
 }
 

@@ -59,6 +59,7 @@ class MultiMaterialSolver final : public Solver {
   void deform_solids();
   void take_solid_densities();
   bool density_follows_deformation(std::size_t i) const;
+  bool broken(std::size_t i) const;
   void add_total_lagrangian_forces();
   void update_smoothing_lengths();
   double largest_grid_radius() const;
@@ -71,7 +72,7 @@ class MultiMaterialSolver final : public Solver {
   void kick(double dt);
   void drift(double dt);
   void yield_solids(double dt);
-  void fail_loosened();
+  void unload_loosened();
   void keep_half_step();
   void return_to_half_step();
   void write_stress_fields();

@@ -60,9 +60,11 @@ class TotalLagrangianSolids {
   // the intact bonds, failing the particles a crack left too few bonds (loosened()); after each
   // step's damage.
   void crack(const BondedParticles& p, std::size_t count);
-  // The particles the last refer() or crack() failed for want of bonds, not of damage: the
-  // solver counts them fully damaged.
+  // The particles the last refer() or crack() failed for want of bonds, not of damage; the
+  // solver treats them as fully damaged, their damage left as it was.
   std::span<const std::size_t> loosened() const { return loosened_; }
+  // Whether particle i has failed, by damage or for want of bonds.
+  bool failed(std::size_t i) const { return bonds_.failed(i); }
   // F and L of the bonded particles of [0, count); after refer().
   void deform(const BondedParticles& p, std::size_t count);
   // The bonded pairs' stress and hourglass forces, added to acceleration; after deform().
