@@ -39,6 +39,8 @@ struct Config {
   int viscosity_iterations = 10;                   // implicit: Picard iterations at most
   double spacing = 0.0;                            // initial particle spacing dp [m]
   double smoothing_ratio = 1.5;                    // h / dp (docs/sph.md, "Choice of h")
+  bool variable_smoothing_length =
+      false;  // h_i = smoothing_ratio (m_i / rho_i)^(1/d) (docs/sph.md)
   std::string kernel = "wendland_c2";
   std::string gradient_kernel;             // empty: the same as kernel
   std::string equation_of_state = "tait";  // tait | linear

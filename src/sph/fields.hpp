@@ -76,6 +76,11 @@ struct Fields {
   // Viscous stress tau = 2 eta_a S of every particle, for the stress-form viscous operator only
   // (empty otherwise). Recomputed at every interaction, so it is not part of the store.
   std::vector<Mat3> viscous_stress;
+  // sph.smoothing_length: variable only (empty otherwise): each fluid particle's h / h_i and
+  // (h / h_i)^(d+1), h the reference smoothing length, from its density at every interaction
+  // (docs/sph.md, "Variable smoothing length"). Not part of the store, like viscous_stress.
+  std::vector<double> kernel_scale;
+  std::vector<double> gradient_scale;
 };
 
 inline bool is_fluid(std::int32_t kind) {

@@ -91,6 +91,24 @@ MultiMaterialSettings read_scheme_materials(Reader& sph, const std::string& sche
   return {};
 }
 
+// sph.smoothing_length: constant (the default) or variable, with the weakly-compressible scheme
+// alone: the incompressible one keeps rho = rho0, the multi-material one always varies h
+// (docs/sph.md, "Variable smoothing length").
+bool read_smoothing_length(Reader& sph, const std::string& scheme) {
+  const bool variable =
+      sph.choice("smoothing_length", "constant", {"constant", "variable"}) == "variable";
+  if (variable && scheme == "incompressible") {
+    throw sph.error("smoothing_length",
+                    "the incompressible scheme keeps the density at rho0, so h cannot vary");
+  }
+  if (sph.contains("smoothing_length") && scheme == kMultiMaterial) {
+    throw sph.error("smoothing_length",
+                    "scheme: multi_material always varies h with the density "
+                    "(sph.multi_material.density)");
+  }
+  return variable;
+}
+
 Config read_config(Reader& root, const Domain& domain) {
   Reader section = root.map("sph");
   Config config;
@@ -136,6 +154,7 @@ Config read_config(Reader& root, const Domain& domain) {
   config.viscosity_iterations =
       section.optional<int>("viscosity_iterations", config.viscosity_iterations, at_least(1));
   config.multi_material = read_scheme_materials(section, config.scheme);
+  config.variable_smoothing_length = read_smoothing_length(section, config.scheme);
   section.done();
   return config;
 }

@@ -26,6 +26,17 @@ namespace {
 // (docs/performance.md, "DualSPHysics' CaseDambreak, side by side").
 constexpr double kNeighbourSkin = 0.1;
 
+// With sph.smoothing_length: variable the neighbour search starts at this many reference
+// supports, widens to 1.1 times the largest h_i's support when that outgrows it, and stops the
+// run beyond kLargestReach (docs/sph.md, "Variable smoothing length").
+constexpr double kVariableReach = 1.25;
+constexpr double kWidening = 1.1;
+constexpr double kLargestReach = 4.0;
+
+double search_reach(const Config& config) {
+  return config.variable_smoothing_length ? kVariableReach : 1.0;
+}
+
 std::unique_ptr<Kernel> make_kernel(const std::string& name, const std::string& key) {
   auto kernel = kernel_registry().create(name);
   if (!kernel)
@@ -122,8 +133,9 @@ SphSolver::SphSolver(ParticleStore& store, const Domain& domain, const Config& c
       eos_(make_equation_of_state(config, fluid, parameters_.sound_speed)),
       kernel_table_(*kernel_, parameters_.h, domain.dimensions),
       gradient_table_(*gradient_kernel_, parameters_.h, domain.dimensions),
-      grid_(domain, std::max(kernel_table_.support_radius(), gradient_table_.support_radius())),
-      neighbours_(domain, gradient_table_.support_radius(),
+      grid_(domain, search_reach(config) *
+                        std::max(kernel_table_.support_radius(), gradient_table_.support_radius())),
+      neighbours_(domain, search_reach(config) * gradient_table_.support_radius(),
                   kNeighbourSkin * gradient_table_.support_radius()),
       bodies_(bodies),
       rheology_(fluid.rheology),
@@ -134,6 +146,10 @@ SphSolver::SphSolver(ParticleStore& store, const Domain& domain, const Config& c
   }
   if (parameters_.viscous_operator == ViscousOperator::stress)
     fields_.viscous_stress.resize(store_.size(), Mat3::Zero());
+  if (config.variable_smoothing_length) {
+    smoothing_length_ = &store_.add_scalar("smoothing_length", "m").values;
+    reach_ = kVariableReach;
+  }
   if (bodies_ != nullptr && bodies_->count() > 0) {
     body_force_ = &store_.add_vector("body_force", "N", false).values;
     body_couple_ = &store_.add_vector("body_couple", "N m", false).values;
@@ -224,7 +240,63 @@ void SphSolver::sort_by_cell() {
   neighbours_.invalidate();
 }
 
+// h_i = eta (m_i / rho_i)^(1/d) of each fluid particle and its kernel's scales to the reference
+// h's table (docs/sph.md, "Variable smoothing length"); the search widens for a particle beyond
+// its reach.
+void SphSolver::update_smoothing_lengths() {
+  if (smoothing_length_ == nullptr)
+    return;
+  const double h = parameters_.h;
+  const double inverse_dimensions = 1.0 / domain_.dimensions;
+  fields_.kernel_scale.assign(store_.size(), 1.0);
+  fields_.gradient_scale.assign(store_.size(), 1.0);
+  std::fill(smoothing_length_->begin() + static_cast<std::ptrdiff_t>(fluid_count_),
+            smoothing_length_->end(), h);
+  const auto n = static_cast<std::ptrdiff_t>(fluid_count_);
+  double smallest = h;
+  double largest = h;
+#pragma omp parallel for schedule(static) reduction(min : smallest) reduction(max : largest)
+  for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
+    const auto i = static_cast<std::size_t>(ii);
+    const double h_i = config_.smoothing_ratio *
+                       std::pow(fields_.mass[i] / fields_.density[i], inverse_dimensions);
+    (*smoothing_length_)[i] = h_i;
+    fields_.kernel_scale[i] = h / h_i;
+    fields_.gradient_scale[i] = std::pow(h / h_i, domain_.dimensions + 1);
+    smallest = std::min(smallest, h_i);
+    largest = std::isnan(h_i) ? std::numeric_limits<double>::infinity() : std::max(largest, h_i);
+  }
+  smallest_smoothing_length_ = smallest;
+  if (largest > reach_ * h)
+    widen_search(largest);
+}
+
+// A new grid and neighbour list reaching kWidening times the support of the largest h (a rare
+// event: the hot loop's buffers are sized anew once).
+void SphSolver::widen_search(double largest_h) {
+  const double h = parameters_.h;
+  if (!(largest_h <= kLargestReach * h)) {
+    throw RunError(fmt::format(
+        "at t = {:.6g} s a fluid particle's variable smoothing length reached {:.4g} m, more than "
+        "{} times h = {:.4g} m (with equal masses, a density below rho0 / {}^d)",
+        time_, largest_h, kLargestReach, h, kLargestReach));
+  }
+  reach_ = std::min(kWidening * largest_h / h, kLargestReach);
+  const double support = gradient_table_.support_radius();
+  try {
+    grid_ = CellGrid(domain_, reach_ * std::max(kernel_table_.support_radius(), support));
+    neighbours_ = NeighbourList(domain_, reach_ * support, kNeighbourSkin * support);
+  } catch (const InputError& error) {
+    throw RunError(fmt::format(
+        "at t = {:.6g} s the variable smoothing length reached {:.4g} m, whose neighbour search "
+        "no longer fits the domain: {}",
+        time_, largest_h, error.message()));
+  }
+  grid_.build(fields_.position);
+}
+
 void SphSolver::interact() {
+  update_smoothing_lengths();
   grid_.build(fields_.position);
   for (std::size_t i = 0; i < fluid_count_; ++i) {
     fields_.pressure[i] = eos_->pressure(fields_.density[i]);
@@ -268,7 +340,7 @@ void SphSolver::update_viscosity() {
 
 double SphSolver::stable_dt() const {
   const TimeStepFactors& factors = config_.time_step;
-  const double h = parameters_.h;
+  const double h = smoothing_length_ != nullptr ? smallest_smoothing_length_ : parameters_.h;
   double dt = poisson_ ? factors.flow_cfl * h / std::max(max_speed_, flow_speed_estimate_)
                        : factors.cfl * h / (parameters_.sound_speed + max_speed_);
   const double nu = max_viscosity_ / parameters_.reference_density;
@@ -507,6 +579,7 @@ void SphSolver::restore(const StateArchive& archive, const std::string& prefix) 
   max_speed_ = inputs[1];
   max_viscosity_ = inputs[2];
   warned_about_speed_ = archive.integers(prefix + "warned_about_speed").front() != 0;
+  update_smoothing_lengths();  // of the restored densities, as at the checkpoint
   // The incompressible step starts from the grid and wall state of the end of the last one,
   // which the constructor built for the case's initial particles: rebuilt for the restored ones
   // (the same values as at the checkpoint, so the resumed run is the uninterrupted one).

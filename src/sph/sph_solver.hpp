@@ -56,6 +56,8 @@ class SphSolver final : public Solver {
  private:
   void initialise_fluid();
   void interact();
+  void update_smoothing_lengths();
+  void widen_search(double largest_h);
   RateExtremes fluid_rates();
   void predict(double dt);
   void correct(double dt);
@@ -112,6 +114,10 @@ class SphSolver final : public Solver {
   double flow_speed_estimate_ = 0.0;          // U of the incompressible time step [m/s]
   std::vector<Vec3>* body_force_ = nullptr;   // store fields, when there are bodies
   std::vector<Vec3>* body_couple_ = nullptr;
+  // sph.smoothing_length: variable: each particle's h_i (a store field) and the smallest [m].
+  std::vector<double>* smoothing_length_ = nullptr;
+  double smallest_smoothing_length_ = 0.0;
+  double reach_ = 1.0;  // of the grid and neighbour list, in reference supports
 };
 
 }  // namespace partimix::sph

@@ -68,8 +68,7 @@ void compute_wall_forces(const Fields& f, std::size_t fluid_count, const CellGri
     auto gather = [&](std::size_t i, const Vec3& r_wi, double r2) {
       PairCentre centre = pair_centre(i, f, p);
       centre.p_over_rho2 -= reference * centre.inverse_density * centre.inverse_density;
-      const double r = std::sqrt(r2);
-      const Vec3 grad = (kernel.derivative(r) / r) * -r_wi;
+      const Vec3 grad = centre_gradient_factor(centre, std::sqrt(r2), kernel) * -r_wi;
       Vec3 acceleration =
           wall_pair_rates(centre, w, -r_wi, r2, inverse_density_w, f, kernel, p).acceleration +
           f.mass[w] * wall_p_over_rho2 * grad;

@@ -48,6 +48,15 @@ TEST(CaseErrors, UnknownNestedKeyListsTheSectionKeys) {
               HasSubstr("unknown key 'kernal'; expected one of: spacing, smoothing_ratio, kernel"));
 }
 
+// docs/sph.md, "Variable smoothing length": the incompressible scheme keeps rho = rho0.
+TEST(CaseErrors, VariableSmoothingLengthNeedsACompressibleScheme) {
+  const std::string text = insert_line(insert_line(kMinimal2D, 11, "  scheme: incompressible"), 12,
+                                       "  smoothing_length: variable");
+  const InputError error = load_error(text);
+  expect_location(error, "case.yaml", 12, 21, "sph.smoothing_length");
+  EXPECT_THAT(error.message(), HasSubstr("h cannot vary"));
+}
+
 TEST(CaseErrors, UnknownKeyInAListItemNamesTheItem) {
   const InputError error = load_error(kMinimal2D + "      radius: 0.1\n");
   expect_location(error, "case.yaml", 18, 7, "fluid.regions[0].radius");

@@ -158,6 +158,12 @@ TEST(CaseLoader, Full2DCaseHasTheSphSettingsWritten) {
   EXPECT_EQ(sph.sort_interval, 10);
 }
 
+TEST(CaseLoader, SmoothingLengthIsConstantUnlessAskedToVary) {
+  EXPECT_FALSE(test_support::sph_config(load_text(kMinimal2D)).variable_smoothing_length);
+  const std::string variable = insert_line(kMinimal2D, 11, "  smoothing_length: variable");
+  EXPECT_TRUE(test_support::sph_config(load_text(variable)).variable_smoothing_length);
+}
+
 TEST(CaseLoader, TwoDimensionalBoxesSpanZFromMinusOneToOne) {
   const Case loaded = load_text(kFull2D);
   ASSERT_EQ(test_support::fluid_of(loaded).regions.size(), 1u);

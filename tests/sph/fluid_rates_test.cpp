@@ -3,8 +3,10 @@
 // equations"), written out here pair by pair, on a disordered block of fluid over two wall
 // layers with random velocities, pressures, densities, viscosities and viscous stresses: with
 // each viscous operator, artificial viscosity and Fourtakas diffusion, on one and two threads
-// (within 1e-12 of the largest rate: round-off). The stress form's term alone is also the
-// explicit part of the semi-implicit viscous step.
+// (within 1e-12 of the largest rate: round-off); and with variable smoothing lengths (h_i within
+// 15% of h), the pair's mean kernel gradient and mean h, a wall's with the fluid particle's h
+// (docs/sph.md, "Variable smoothing length"). The stress form's term alone is also the explicit
+// part of the semi-implicit viscous step.
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -74,6 +76,30 @@ struct Block {
     }
   }
 
+  // Each fluid particle's h_i = h / s_i, s_i within 15% of 1, as the solver sets them.
+  void vary_smoothing_lengths() {
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    fields.kernel_scale.assign(store.size(), 1.0);
+    fields.gradient_scale.assign(store.size(), 1.0);
+    for (std::size_t n = 0; n < fluid_count; ++n) {
+      fields.kernel_scale[n] = 1.0 + 0.15 * u(rng);
+      fields.gradient_scale[n] = std::pow(fields.kernel_scale[n], 4);
+    }
+  }
+
+  // dW/dr of particle n's kernel: W(r, h_n) = s^3 W(r s, h), s = h / h_n.
+  double derivative_of(std::size_t n, double r, const KernelTable& kernel) const {
+    if (fields.kernel_scale.empty())
+      return kernel.derivative(r);
+    const double s = fields.kernel_scale[n];
+    return std::pow(s, 4) * kernel.derivative(r * s);
+  }
+
+  double smoothing_length_of(std::size_t n) const {
+    return fields.kernel_scale.empty() ? p.h : p.h / fields.kernel_scale[n];
+  }
+
   // docs/sph.md, term by term, summed over all neighbours j of fluid particle i.
   void reference(const KernelTable& kernel, std::vector<Vec3>& acceleration,
                  std::vector<double>& density_rate) const {
@@ -85,11 +111,18 @@ struct Block {
       for (std::size_t j = 0; j < store.size(); ++j) {
         const Vec3 r_ij = f.position[i] - f.position[j];
         const double r2 = r_ij.squaredNorm();
-        if (j == i || r2 >= std::pow(kernel.support_radius(), 2))
+        if (j == i)
           continue;
         const double r = std::sqrt(r2);
-        const Vec3 grad = kernel.derivative(r) / r * r_ij;
         const bool fluid_j = j < fluid_count;
+        const double dw_dr = fluid_j
+                                 ? 0.5 * (derivative_of(i, r, kernel) + derivative_of(j, r, kernel))
+                                 : derivative_of(i, r, kernel);
+        const double h_pair = fluid_j ? 0.5 * (smoothing_length_of(i) + smoothing_length_of(j))
+                                      : smoothing_length_of(i);
+        if (dw_dr == 0.0)
+          continue;
+        const Vec3 grad = dw_dr / r * r_ij;
         const double rho_j = f.density[j];
         const double m_j = f.mass[j];
         const Vec3 v_ij = f.velocity[i] - f.velocity[j];
@@ -105,7 +138,7 @@ struct Block {
                grad;
         }
         if (v_viscous.dot(r_ij) < 0.0) {
-          const double mu = p.h * v_viscous.dot(r_ij) / (r2 + p.eta2);
+          const double mu = h_pair * v_viscous.dot(r_ij) / (r2 + p.eta2);
           const double pi = -p.artificial_viscosity * p.sound_speed * mu / (0.5 * (rho_i + rho_j));
           a -= m_j * pi * grad;
         }
@@ -113,8 +146,8 @@ struct Block {
           const double difference =
               rho_j - rho_i +
               p.reference_density * p.gravity.dot(r_ij) / std::pow(p.sound_speed, 2);
-          rate += 2.0 * p.delta * p.h * p.sound_speed * difference * (-r_ij.dot(grad) / r2) * m_j /
-                  rho_j;
+          rate += 2.0 * p.delta * h_pair * p.sound_speed * difference * (-r_ij.dot(grad) / r2) *
+                  m_j / rho_j;
         }
       }
       acceleration[i] = a;
@@ -123,14 +156,17 @@ struct Block {
   }
 };
 
-void expect_reference(ViscousOperator viscous_operator, int threads) {
+void expect_reference(ViscousOperator viscous_operator, int threads, bool variable_h = false) {
   Block block(viscous_operator);
+  if (variable_h)
+    block.vary_smoothing_lengths();
   const auto kernel = kernel_registry().create("wendland_c2");
   const KernelTable table(*kernel, block.p.h, 3);
   std::vector<Vec3> acceleration(block.fluid_count);
   std::vector<double> density_rate(block.fluid_count);
   block.reference(table, acceleration, density_rate);
-  NeighbourList list(block.domain, table.support_radius(), 0.1 * table.support_radius());
+  // The largest h_i is below 1 / 0.85 h: the list reaches 1.25 supports, as the solver's.
+  NeighbourList list(block.domain, 1.25 * table.support_radius(), 0.1 * table.support_radius());
   list.update(block.fields.position, block.fluid_count, block.fluid_count);
   RateBuffers buffers;
   omp_set_num_threads(threads);
@@ -156,6 +192,9 @@ TEST(FluidRates, MorrisEqualsTheDirectSumOnTwoThreads) {
 }
 TEST(FluidRates, StressFormEqualsTheDirectSumOnTwoThreads) {
   expect_reference(ViscousOperator::stress, 2);
+}
+TEST(FluidRates, VariableSmoothingLengthsEqualTheDirectSumOnTwoThreads) {
+  expect_reference(ViscousOperator::morris, 2, true);
 }
 
 // The explicit part of the semi-implicit viscous step (docs/sph.md, "Implicit viscosity") is the
