@@ -3,7 +3,8 @@
 // tank run past half time with checkpoints, then on to the end from the last checkpoint in a fresh
 // simulation, and end bit for bit as the run that went through: series.csv, the series of an
 // analysis on its own schedule, every frame of both methods, the collections and the figures;
-// the same for superquadric grains and for a droplet with a total Lagrangian shell.
+// the same for superquadric grains, for a droplet with a total Lagrangian shell and for water
+// with the variable smoothing length.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -213,6 +214,41 @@ TEST(ResumeInProcess, DropletWhoseShellCracksResumesBitForBit) {
   const TempDir dir;
   ASSERT_NO_FATAL_FAILURE(
       test_support::run_through_and_resumed(dir, droplet("3.0e-6", weak), droplet("2.5e-6", weak)));
+  expect_same_outputs(dir, "sph", 3);
+}
+
+// A 2D water column collapsing with the variable smoothing length (docs/sph.md, "Variable
+// smoothing length"): each h_i follows from the restored density, so the checkpoint needs none,
+// and the time step, which the smallest h sets, is the same.
+std::string variable_h_column(const std::string& end) {
+  return R"(solver: sph
+dimensions: 2
+gravity: [0, -9.81]
+domain:
+  min: [-0.05, -0.05]
+  max: [0.25, 0.2]
+time:
+  end: )" +
+         end + R"(
+  output_interval: 0.02
+  checkpoint_interval: 0.01
+walls:
+  - {shape: box, min: [0, 0], max: [0.2, 0.15], open: [y+]}
+sph:
+  spacing: 0.01
+  smoothing_length: variable
+fluid:
+  density: 1000
+  viscosity: 1.0e-3
+  regions:
+    - {shape: box, min: [0, 0], max: [0.06, 0.1]}
+)";
+}
+
+TEST(ResumeInProcess, VariableSmoothingLengthResumesBitForBit) {
+  const TempDir dir;
+  ASSERT_NO_FATAL_FAILURE(test_support::run_through_and_resumed(dir, variable_h_column("0.06"),
+                                                                variable_h_column("0.035")));
   expect_same_outputs(dir, "sph", 3);
 }
 

@@ -78,6 +78,13 @@ TEST(NoAllocation, SolverStepsDoNotAllocateAfterWarmUp) {
   EXPECT_EQ(allocations_in_40_steps_after_warm_up(dam_break()), 0);
 }
 
+// The variable smoothing length: each particle's h and kernel scales at every interaction.
+TEST(NoAllocation, VariableSmoothingLengthStepsDoNotAllocate) {
+  io::Case c = dam_break();
+  testing_cases::sph_of(c).config.variable_smoothing_length = true;
+  EXPECT_EQ(allocations_in_40_steps_after_warm_up(c), 0);
+}
+
 // A shear-thinning fluid: shear rates, viscosities and the stress-form viscous operator.
 TEST(NoAllocation, NonNewtonianStressFormStepsDoNotAllocate) {
   io::Case c = dam_break();
