@@ -29,7 +29,7 @@ constexpr double kNeighbourSkin = 0.1;
 // With sph.smoothing_length: variable the neighbour search starts at this many reference
 // supports, widens to 1.1 times the largest h_i's support when that outgrows it, and stops the
 // run beyond kLargestReach (docs/sph.md, "Variable smoothing length").
-constexpr double kVariableReach = 1.25;
+constexpr double kVariableReach = 1.05;
 constexpr double kWidening = 1.1;
 constexpr double kLargestReach = 4.0;
 

@@ -165,7 +165,7 @@ void expect_reference(ViscousOperator viscous_operator, int threads, bool variab
   std::vector<Vec3> acceleration(block.fluid_count);
   std::vector<double> density_rate(block.fluid_count);
   block.reference(table, acceleration, density_rate);
-  // The largest h_i is below 1 / 0.85 h: the list reaches 1.25 supports, as the solver's.
+  // The largest h_i is below h / 0.85: the list reaches 1.25 supports.
   NeighbourList list(block.domain, 1.25 * table.support_radius(), 0.1 * table.support_radius());
   list.update(block.fields.position, block.fluid_count, block.fluid_count);
   RateBuffers buffers;

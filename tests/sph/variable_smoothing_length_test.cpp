@@ -79,7 +79,7 @@ struct Box {
 };
 
 // Densities 0.9 to 1.1 rho0 (by particle index), one at 0.6 rho0 (h_i = 1.29 h, beyond the
-// search's first 1.25 h): after a step of 1e-9 s every h_i is 1.5 dp (m / rho_i)^(1/2) to
+// search's first 1.05 h): after a step of 1e-9 s every h_i is 1.5 dp (m / rho_i)^(1/2) to
 // round-off.
 TEST(VariableSmoothingLength, EachParticlesHFollowsItsDensity) {
   Box box;
