@@ -177,6 +177,7 @@ TEST(CaseMultiMaterial, TaitLiquidWithoutDensityStartsAtItsReferenceDensity) {
   EXPECT_DOUBLE_EQ(liquid.surface_tension, 0.025);
   EXPECT_DOUBLE_EQ(liquid.heat_source, -10.0);
   EXPECT_DOUBLE_EQ(liquid.surface_heat_flux, 0.0);
+  EXPECT_FALSE(liquid.fixed_temperature);
   EXPECT_EQ(loaded.resolved["sph"]["materials"][1]["density"], 800.0);
 }
 
@@ -386,6 +387,19 @@ TEST(CaseMultiMaterial, NegativeHourglass) {
   expect_error(
       multi_material_case(kLiquid + "      solid: {shear_modulus: 1.0e6, hourglass: -1}\n"),
       "sph.materials[0].solid.hourglass", "must be >= 0, got -1");
+}
+
+TEST(CaseMultiMaterial, AFixedTemperatureLoads) {
+  const io::Case loaded =
+      load_text(multi_material_case(kLiquid + "      fixed_temperature: true\n"));
+  EXPECT_TRUE(settings_of(loaded).materials[0].fixed_temperature);
+}
+
+// docs/multi-material-sph.md, "Heat conduction": a held temperature takes no heating.
+TEST(CaseMultiMaterial, AFixedTemperatureTakesNoHeatSource) {
+  expect_error(
+      multi_material_case(kLiquid + "      fixed_temperature: true\n      heat_source: 5\n"),
+      "sph.materials[0].fixed_temperature", "takes no heat_source");
 }
 
 TEST(CaseMultiMaterial, TimeStepFactorsArePositive) {

@@ -30,7 +30,10 @@ struct MaterialSpec {
   // following from the equation of state at the initial temperature.
   std::optional<double> density;
   std::optional<double> pressure;
-  double temperature = 293.15;   // initial T [K]
+  double temperature = 293.15;  // initial T [K]
+  // Holds `temperature` throughout: a temperature (Dirichlet) boundary, as a body of infinite heat
+  // capacity (docs/multi-material-sph.md, "Heat conduction").
+  bool fixed_temperature = false;
   double specific_heat = 0.0;    // c_v [J/(kg K)], > 0
   double viscosity = 0.0;        // dynamic viscosity [Pa s]
   double conductivity = 0.0;     // k [W/(m K)]

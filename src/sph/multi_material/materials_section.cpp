@@ -167,6 +167,12 @@ MaterialSpec read_material(Reader& item) {
       item.optional<double>("surface_tension", spec.surface_tension, kNonNegative);
   spec.heat_source = item.optional<double>("heat_source", spec.heat_source);
   spec.surface_heat_flux = item.optional<double>("surface_heat_flux", spec.surface_heat_flux);
+  spec.fixed_temperature = item.optional<bool>("fixed_temperature", spec.fixed_temperature);
+  if (spec.fixed_temperature && (spec.heat_source != 0.0 || spec.surface_heat_flux != 0.0)) {
+    throw item.error("fixed_temperature",
+                     "a material whose temperature is fixed takes no heat_source or "
+                     "surface_heat_flux");
+  }
   spec.solid = read_solid(item);
   item.done();
   return spec;

@@ -12,6 +12,7 @@
 #include "materials/artificial_stress.hpp"
 #include "materials/jaumann_rate.hpp"
 #include "particles/store_state.hpp"
+#include "sph/dirichlet_temperature.hpp"
 #include "sph/heat_conduction.hpp"
 #include "sph/multi_material/solid_update.hpp"
 #include "sph/smoothing_length.hpp"
@@ -91,10 +92,12 @@ MultiMaterialSolver::MultiMaterialSolver(ParticleStore& store, const Domain& dom
       stress_rate_shear_(store.add_vector("stress_rate_shear", "Pa/s", false).values),
       surface_heating_(surface_heat_fluxes(config.multi_material), domain.dimensions) {
   const std::size_t n = store_.size();
-  for (std::vector<double>* array : {&omega_, &sound_speed_, &spacing_, &viscosity_, &conductivity_,
-                                     &expansion_, &heating_, &conduction_, &colour_, &curvature_,
-                                     &raw_curvature_, &momentum_pressure_, &surface_source_})
+  for (std::vector<double>* array :
+       {&omega_, &sound_speed_, &spacing_, &viscosity_, &conductivity_, &expansion_, &heating_,
+        &conduction_, &colour_, &curvature_, &raw_curvature_, &momentum_pressure_, &surface_source_,
+        &conducted_temperature_})
     array->assign(n, 0.0);
+  held_.assign(n, 0);
   for (std::vector<Mat3>* array : {&stress_, &artificial_stress_, &velocity_gradient_})
     array->assign(n, Mat3::Zero());
   for (std::vector<Vec3>* array : {&unity_gradient_, &colour_gradient_, &normal_gradient_})
@@ -111,8 +114,10 @@ MultiMaterialSolver::MultiMaterialSolver(ParticleStore& store, const Domain& dom
     omega_[i] = 1.0;
     viscosity_[i] = material.spec().viscosity;
     conductivity_[i] = material.spec().conductivity;
+    held_[i] = material.spec().fixed_temperature ? 1 : 0;
     largest_h = std::max(largest_h, h_[i]);
   }
+  holds_temperatures_ = std::find(held_.begin(), held_.end(), 1) != held_.end();
   conducts_ =
       std::any_of(conductivity_.begin(), conductivity_.end(), [](double k) { return k > 0.0; });
   largest_h = std::max(largest_h, surface_table_.support_radius() / scaled_.support());
@@ -352,15 +357,21 @@ void MultiMaterialSolver::add_surface_tension() {
 
 // c_v dT/dt = T (dp/dT)_rho epsilon + heating + conduction + (q + q'' S / V) / rho + the ambient's
 // heat h (T_a - T) 2 |g| / rho, 2 |g| the surface per unit volume (the particles hold only the
-// inner half of the colour's step from 1 to 0) (docs/multi-material-sph.md, "The scheme").
+// inner half of the colour's step from 1 to 0) (docs/multi-material-sph.md, "The scheme"); 0 for
+// a material with a fixed temperature.
 // With the continuity pairing, drho/dt = rho^2 epsilon.
 void MultiMaterialSolver::update_temperature_rates() {
   const std::size_t n = store_.size();
   std::fill(conduction_.begin(), conduction_.end(), 0.0);
   if (conducts_) {
-    add_conduction_rates(
-        {store_.position(), h_, store_.mass(), density_, temperature_, conductivity_}, n, *grid_,
-        scaled_, conduction_);
+    std::span<const double> conducted = temperature_;
+    if (holds_temperatures_) {
+      dirichlet_temperatures({store_.position(), h_, temperature_, held_}, n, *grid_, scaled_,
+                             conducted_temperature_);
+      conducted = conducted_temperature_;
+    }
+    add_conduction_rates({store_.position(), h_, store_.mass(), density_, conducted, conductivity_},
+                         n, *grid_, scaled_, conduction_);
   }
   if (surface_heating_.any()) {
     surface_heating_.update({store_.position(), h_, store_.mass(), density_, material_}, n, *grid_,
@@ -375,9 +386,11 @@ void MultiMaterialSolver::update_temperature_rates() {
         t * material_of(i).eos().pressure_temperature_derivative(rho, t) * expansion_[i];
     const double surface_heat = ambient.heat_transfer_coefficient * (ambient.temperature - t) *
                                 2.0 * unity_gradient_[i].norm() / rho;
-    temperature_rate_[i] = (work + heating_[i] + conduction_[i] +
-                            (spec.heat_source + surface_source_[i]) / rho + surface_heat) /
-                           spec.specific_heat;
+    temperature_rate_[i] = spec.fixed_temperature
+                               ? 0.0
+                               : (work + heating_[i] + conduction_[i] +
+                                  (spec.heat_source + surface_source_[i]) / rho + surface_heat) /
+                                     spec.specific_heat;
     density_rate_[i] = pairing_ == DensityPairing::continuity ? rho * rho * expansion_[i] : 0.0;
     // A total Lagrangian solid's density follows det F (deform_solids()); between evaluations
     // it moves at the rate of its own L.
@@ -503,7 +516,8 @@ void MultiMaterialSolver::yield_solids(double dt) {
     stress_[i] = point.deviatoric_stress;
     plastic_strain_[i] = point.plastic_strain;
     damage_[i] = point.damage;
-    temperature_[i] += result.plastic_work / spec.specific_heat;
+    if (!spec.fixed_temperature)
+      temperature_[i] += result.plastic_work / spec.specific_heat;
   }
 }
 

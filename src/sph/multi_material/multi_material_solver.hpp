@@ -111,6 +111,11 @@ class MultiMaterialSolver final : public Solver {
   std::vector<double> expansion_, heating_, conduction_, colour_, curvature_, raw_curvature_;
   std::vector<double> momentum_pressure_;  // pressure + the background pressure
   std::vector<double> surface_source_;     // q'' S / V of SurfaceHeating [W/m^3]
+  // Temperature boundaries (materials with fixed_temperature): each particle's flag, and the
+  // temperatures conduction reads (sph/dirichlet_temperature.hpp).
+  std::vector<std::uint8_t> held_;
+  std::vector<double> conducted_temperature_;
+  bool holds_temperatures_ = false;
   std::vector<Mat3> stress_, artificial_stress_, velocity_gradient_;
   std::vector<Vec3> unity_gradient_, colour_gradient_, normal_gradient_;
   HalfStep half_;
