@@ -1,10 +1,11 @@
 // The Laplace pressure of a static droplet on the multi-material scheme
 // (docs/multi-material-sph.md, "Validation"): a disc (2D) or a sphere (3D) of JP-8 (R = 0.5 mm;
-// sigma = 0.025 N/m) in a liquid of the same density, periodic all round, both viscous enough that
-// the start-up's capillary waves die within the run. The pressure inside exceeds the pressure
-// outside by (d - 1) sigma / R (Laplace): measured on the mean pressure over r < R / 2 less the
-// mean over r > 1.2 R, averaged over the last fifth of the run. The background pressure
-// 2 sigma / R keeps the outer liquid's pressure positive.
+// sigma = 0.025 N/m) in a liquid of the same density (or, last, ten times lighter), periodic all
+// round, both viscous enough that the start-up's capillary waves die within the run. The pressure
+// inside exceeds the pressure outside by (d - 1) sigma / R (Laplace): measured on the mean
+// pressure over r < R / 2 less the mean over r > 1.2 R, averaged over the last fifth of the run.
+// The background pressure (2 sigma / R at equal densities) keeps the outer liquid's pressure
+// positive.
 // - 2D: R = 15 spacings in a square of side 4 R, viscosity 0.05 Pa s (Ohnesorge number 0.5),
 //   10 ms (five capillary times sqrt(rho R^3 / sigma)); held to 4% (the curvature's own error is
 //   1-3%, tests/sph/surface_tension_test.cpp). Measured (2026-11-30): +2.3%; +3.7% without the
@@ -13,6 +14,13 @@
 //   number 1), 6 ms (three capillary times). Measured (2026-11-30): -6.65% (-7.2% over 12 ms);
 //   the deficit is the resolution's: -11.4% at R = 6 spacings, +0.35% at R = 10 (15,625
 //   particles, 5 min on one core, too long for the suite). Held to 8%, set after that study.
+// - 2D with the bath ten times lighter than the drop (its viscosity too, so that both have the
+//   same kinematic viscosity), the same sound speed, the background pressure 20 sigma / R, 6 ms;
+//   held to 4%. Measured (2026-12-02): +2.86% (+2.19% over 10 ms). With the background pressure
+//   at 2 sigma / R the light bath's pressure stays near zero, its particles clump at the
+//   interface (the tensile instability) and the jump reads +609%; with the bath's stiffness
+//   rho0 c0^2 made the drop's (c0 times sqrt(10)) instead, -4.1%. At a density ratio of 100
+//   (20 sigma / R, equal stiffness) see docs/multi-material-sph.md, "Validation".
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -31,10 +39,12 @@ constexpr double kDensity = 800.0;  // [kg/m^3]
 
 struct Setting {
   int dimensions;
-  int radius_spacings;  // R / dp
-  double box_side;      // in R
-  double viscosity;     // [Pa s]
-  double duration;      // [s]
+  int radius_spacings;         // R / dp
+  double box_side;             // in R
+  double viscosity;            // [Pa s], the drop's; the bath's kinematic viscosity is the same
+  double duration;             // [s]
+  double density_ratio = 1.0;  // the drop's density over the bath's
+  double background = 2.0;     // the background pressure, in sigma / R
 };
 
 MaterialSpec tait_liquid(const std::string& name, double viscosity) {
@@ -48,8 +58,9 @@ MaterialSpec tait_liquid(const std::string& name, double viscosity) {
   return spec;
 }
 
-// A lattice filling the periodic box, the points within R of its centre of material 0 (the drop).
-void lay_lattice(ParticleStore& store, const Domain& domain, double spacing) {
+// A lattice filling the periodic box, the points within R of its centre of material 0 (the drop),
+// the others of the bath, `density_ratio` times lighter.
+void lay_lattice(ParticleStore& store, const Domain& domain, double spacing, double density_ratio) {
   const int n = static_cast<int>(std::lround((domain.hi.x() - domain.lo.x()) / spacing));
   const int nz = domain.dimensions == 3 ? n : 1;
   const double cell = std::pow(spacing, domain.dimensions);
@@ -64,8 +75,9 @@ void lay_lattice(ParticleStore& store, const Domain& domain, double spacing) {
         store.resize(i + 1);
         store.position()[i] = x;
         store.id()[i] = static_cast<std::int64_t>(i);
-        store.mass()[i] = kDensity * cell;
-        material.push_back(x.norm() < kRadius ? 0 : 1);
+        const bool drop = x.norm() < kRadius;
+        store.mass()[i] = (drop ? kDensity : kDensity / density_ratio) * cell;
+        material.push_back(drop ? 0 : 1);
       }
   store.add_integer("material", "").values = material;
 }
@@ -101,10 +113,12 @@ double laplace_jump(const Setting& setting) {
   Config config;
   config.scheme = "multi_material";
   config.spacing = kRadius / setting.radius_spacings;
-  config.multi_material.materials = {drop, tait_liquid("bath", setting.viscosity)};
-  config.multi_material.background_pressure = 2.0 * kSigma / kRadius;
+  MaterialSpec bath = tait_liquid("bath", setting.viscosity / setting.density_ratio);
+  bath.eos.reference_density = kDensity / setting.density_ratio;
+  config.multi_material.materials = {drop, bath};
+  config.multi_material.background_pressure = setting.background * kSigma / kRadius;
   ParticleStore store;
-  lay_lattice(store, domain, config.spacing);
+  lay_lattice(store, domain, config.spacing, setting.density_ratio);
   MultiMaterialSolver solver(store, domain, config, Vec3::Zero());
   double jump_sum = 0.0;
   int samples = 0;
@@ -128,6 +142,10 @@ void expect_laplace(const Setting& setting, double tolerance) {
 
 TEST(LaplaceDroplet, PressureJumpOfADiscIsSigmaOverRadius) {
   expect_laplace({2, 15, 4.0, 0.05, 0.01}, 0.04);
+}
+
+TEST(LaplaceDroplet, PressureJumpOfADiscHoldsWithABathTenTimesLighter) {
+  expect_laplace({2, 15, 4.0, 0.05, 0.006, 10.0, 20.0}, 0.04);
 }
 
 TEST(LaplaceDroplet, PressureJumpOfASphereIsTwiceSigmaOverRadius) {
