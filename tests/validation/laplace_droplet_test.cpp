@@ -20,7 +20,7 @@
 //   at 2 sigma / R the light bath's pressure stays near zero, its particles clump at the
 //   interface (the tensile instability) and the jump reads +609%; with the bath's stiffness
 //   rho0 c0^2 made the drop's (c0 times sqrt(10)) instead, -4.1%. At a density ratio of 100
-//   (20 sigma / R, equal stiffness) see docs/multi-material-sph.md, "Validation".
+//   (20 sigma / R, equal stiffness, 10 ms, 6 minutes on one core): +4.63%.
 #include <gtest/gtest.h>
 
 #include <cmath>
