@@ -1,5 +1,7 @@
 #include "sph/dirichlet_temperature.hpp"
 
+#include <cmath>
+
 namespace partimix::sph {
 
 void dirichlet_temperatures(const DirichletParticles& p, std::size_t count, const CellGrid& grid,
