@@ -147,9 +147,13 @@ SphSolver::SphSolver(ParticleStore& store, const Domain& domain, const Config& c
   if (parameters_.viscous_operator == ViscousOperator::stress)
     fields_.viscous_stress.resize(store_.size(), Mat3::Zero());
   if (config.variable_smoothing_length) {
+    // Wall particles keep the reference h and scale 1; sorting keeps them after the fluid.
     smoothing_length_ = &store_.add_scalar("smoothing_length", "m").values;
-    reach_ = kVariableReach;
+    std::fill(smoothing_length_->begin(), smoothing_length_->end(), parameters_.h);
+    fields_.kernel_scale.assign(store_.size(), 1.0);
+    fields_.gradient_scale.assign(store_.size(), 1.0);
   }
+  reach_ = search_reach(config);
   if (bodies_ != nullptr && bodies_->count() > 0) {
     body_force_ = &store_.add_vector("body_force", "N", false).values;
     body_couple_ = &store_.add_vector("body_couple", "N m", false).values;
@@ -241,28 +245,26 @@ void SphSolver::sort_by_cell() {
 }
 
 // h_i = eta (m_i / rho_i)^(1/d) of each fluid particle and its kernel's scales to the reference
-// h's table (docs/sph.md, "Variable smoothing length"); the search widens for a particle beyond
-// its reach.
+// h's table (docs/sph.md, "Variable smoothing length"): with s = h / h_i, s^d = (h / eta)^d rho_i
+// / m_i, so one root gives s, h_i and s^(d+1). The search widens for a particle beyond its reach.
 void SphSolver::update_smoothing_lengths() {
   if (smoothing_length_ == nullptr)
     return;
   const double h = parameters_.h;
   const double inverse_dimensions = 1.0 / domain_.dimensions;
-  fields_.kernel_scale.assign(store_.size(), 1.0);
-  fields_.gradient_scale.assign(store_.size(), 1.0);
-  std::fill(smoothing_length_->begin() + static_cast<std::ptrdiff_t>(fluid_count_),
-            smoothing_length_->end(), h);
+  const double reference_volume = std::pow(h / config_.smoothing_ratio, domain_.dimensions);
   const auto n = static_cast<std::ptrdiff_t>(fluid_count_);
   double smallest = h;
   double largest = h;
 #pragma omp parallel for schedule(static) reduction(min : smallest) reduction(max : largest)
   for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
     const auto i = static_cast<std::size_t>(ii);
-    const double h_i = config_.smoothing_ratio *
-                       std::pow(fields_.mass[i] / fields_.density[i], inverse_dimensions);
+    const double scale_d = reference_volume * fields_.density[i] / fields_.mass[i];
+    const double scale = std::pow(scale_d, inverse_dimensions);
+    const double h_i = h / scale;
     (*smoothing_length_)[i] = h_i;
-    fields_.kernel_scale[i] = h / h_i;
-    fields_.gradient_scale[i] = std::pow(h / h_i, domain_.dimensions + 1);
+    fields_.kernel_scale[i] = scale;
+    fields_.gradient_scale[i] = scale_d * scale;
     smallest = std::min(smallest, h_i);
     largest = std::isnan(h_i) ? std::numeric_limits<double>::infinity() : std::max(largest, h_i);
   }
